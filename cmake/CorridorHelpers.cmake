@@ -1,0 +1,44 @@
+# corridor_add_library(NAME SOURCES ... DEPS ...): one library per module, include paths from the root.
+set(CORRIDOR_WARNINGS -Wall -Wextra -Wpedantic -Wshadow -Wnon-virtual-dtor -Wswitch)
+if(CORRIDOR_WERROR)
+  list(APPEND CORRIDOR_WARNINGS -Werror)
+endif()
+
+set(CORRIDOR_LIBRARIES "" CACHE INTERNAL "Module libraries to install")
+
+function(corridor_add_library name)
+  cmake_parse_arguments(ARG "" "" "SOURCES;HEADERS;DEPS" ${ARGN})
+  add_library(${name} ${ARG_SOURCES} ${ARG_HEADERS})
+  add_library(corridor_depth::${name} ALIAS ${name})
+  target_include_directories(${name} PUBLIC
+    $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}>
+    $<INSTALL_INTERFACE:include/corridor_depth>)
+  target_compile_options(${name} PRIVATE ${CORRIDOR_WARNINGS})
+  target_link_libraries(${name} PUBLIC ${ARG_DEPS})
+  set_target_properties(${name} PROPERTIES EXPORT_NAME ${name})
+  set(CORRIDOR_LIBRARIES ${CORRIDOR_LIBRARIES} ${name} CACHE INTERNAL "")
+  file(RELATIVE_PATH rel "${PROJECT_SOURCE_DIR}" "${CMAKE_CURRENT_SOURCE_DIR}")
+  install(FILES ${ARG_HEADERS} DESTINATION include/corridor_depth/${rel})
+endfunction()
+
+# corridor_add_executable(NAME SOURCES ... DEPS ...)
+function(corridor_add_executable name)
+  cmake_parse_arguments(ARG "" "" "SOURCES;DEPS" ${ARGN})
+  add_executable(${name} ${ARG_SOURCES})
+  target_compile_options(${name} PRIVATE ${CORRIDOR_WARNINGS})
+  target_link_libraries(${name} PRIVATE ${ARG_DEPS})
+endfunction()
+
+# corridor_add_test(NAME SOURCES ... DEPS ...): a GoogleTest binary registered with ctest.
+function(corridor_add_test name)
+  cmake_parse_arguments(ARG "" "" "SOURCES;DEPS;LABELS" ${ARGN})
+  add_executable(${name} ${ARG_SOURCES})
+  target_compile_options(${name} PRIVATE ${CORRIDOR_WARNINGS})
+  target_link_libraries(${name} PRIVATE ${ARG_DEPS} GTest::gtest GTest::gtest_main)
+  target_compile_definitions(${name} PRIVATE
+    CORRIDOR_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
+    CORRIDOR_SHARED_DIR="${PROJECT_SOURCE_DIR}/../shared"
+    CORRIDOR_BINARY_DIR="${PROJECT_BINARY_DIR}")
+  include(GoogleTest)
+  gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 PROPERTIES LABELS "${ARG_LABELS}")
+endfunction()

@@ -1,0 +1,22 @@
+#pragma once
+
+#include <string>
+
+namespace corridor {
+
+// The straight-corridor model of geometry.md, section 2. Radians and metres.
+struct CorridorGeometry {
+  double yaw = 0.0;             // phi: > 0 when the corridor axis appears right of cx.
+  double pitch = 0.0;           // theta: > 0 when the camera is pitched down.
+  double offset = 0.0;          // tau = (d_l - d_r) / 2: > 0 when the camera is right of centre.
+  double width = 0.0;           // w = d_l + d_r.
+  double camera_height = 0.0;   // h: optical centre above the floor.
+  double ceiling_height = 0.0;  // H_c above the floor; 0 = unknown.
+
+  double LeftDistance() const { return 0.5 * width + offset; }   // d_l
+  double RightDistance() const { return 0.5 * width - offset; }  // d_r
+  bool HasCeiling() const { return ceiling_height > camera_height; }
+  std::string ToString() const;
+};
+
+}  // namespace corridor

@@ -1,0 +1,48 @@
+#pragma once
+
+#include <string>
+#include <utility>
+
+namespace corridor {
+
+// What went wrong, coarse enough for a caller to branch on.
+enum class StatusCode {
+  kOk = 0,
+  kInvalidArgument,      // Bad options, calibration or image (the caller's input).
+  kNotFound,             // A file or folder that is not there.
+  kIoError,              // A file that exists but cannot be read or written.
+  kNoCorridorFound,      // The image holds no usable pair of junction lines.
+  kImplausibleGeometry,  // The lines were found, but the geometry they give is not a corridor.
+  kInternal,             // A numerical failure that no input should cause.
+};
+
+const char* StatusCodeToString(StatusCode code);
+
+// A result code with a human-readable message. Cheap to copy; no exceptions.
+class Status {
+ public:
+  Status() = default;
+  Status(StatusCode code, std::string message) : code_(code), message_(std::move(message)) {}
+
+  static Status Ok() { return Status(); }
+  static Status InvalidArgument(std::string m) { return {StatusCode::kInvalidArgument, std::move(m)}; }
+  static Status NotFound(std::string m) { return {StatusCode::kNotFound, std::move(m)}; }
+  static Status IoError(std::string m) { return {StatusCode::kIoError, std::move(m)}; }
+  static Status NoCorridorFound(std::string m) { return {StatusCode::kNoCorridorFound, std::move(m)}; }
+  static Status ImplausibleGeometry(std::string m) {
+    return {StatusCode::kImplausibleGeometry, std::move(m)};
+  }
+  static Status Internal(std::string m) { return {StatusCode::kInternal, std::move(m)}; }
+
+  bool ok() const { return code_ == StatusCode::kOk; }
+  StatusCode code() const { return code_; }
+  const std::string& message() const { return message_; }
+  // "ok", or "<code>: <message>".
+  std::string ToString() const;
+
+ private:
+  StatusCode code_ = StatusCode::kOk;
+  std::string message_;
+};
+
+}  // namespace corridor
