@@ -1,0 +1,18 @@
+#pragma once
+
+#include <string>
+
+#include "core/camera.h"
+#include "core/status.h"
+
+namespace corridor {
+
+// Reads a ROS camera_info YAML (image_width, image_height, camera_matrix, distortion_model,
+// distortion_coefficients) plus the extra key camera_height (metres; 0 when absent).
+// Every error names the file and the key that is wrong. Checks intrinsics, not the height.
+Status ReadCameraYaml(const std::string& path, Camera* camera);
+
+// Writes the same format (plumb_bob); atomic (temporary name, then rename).
+Status WriteCameraYaml(const std::string& path, const Camera& camera);
+
+}  // namespace corridor

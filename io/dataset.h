@@ -1,0 +1,48 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/camera.h"
+#include "core/status.h"
+#include "io/truth_yaml.h"
+
+namespace corridor {
+
+// The dataset layout (issue 2):
+//   <dataset>/<scene>/rgb/<frame>.png, <dataset>/<scene>/depth/<frame>.png (16-bit mm),
+//   <dataset>/<scene>/camera.yaml (or <dataset>/camera.yaml for every scene without one),
+//   <dataset>/<scene>/truth.yaml (optional), <dataset>/<scene>/floor/<frame>.png (optional).
+struct DatasetFrame {
+  std::string name;             // The file name without extension, e.g. "000003".
+  std::string rgb_path;         // Colour image.
+  std::string depth_path;       // Ground-truth depth; empty when the scene has none for it.
+  std::string floor_mask_path;  // Floor mask (255 = floor); empty when absent.
+  bool has_truth = false;       // True when truth.yaml lists this frame.
+  FrameTruth truth;             // Valid when has_truth.
+};
+
+struct DatasetScene {
+  std::string name;                  // The scene folder's name.
+  std::string dir;                   // Its path.
+  std::string camera_path;           // The camera.yaml that applies; empty when none exists.
+  Camera camera;                     // Read from camera_path (mount_height 0 if key absent).
+  std::vector<DatasetFrame> frames;  // Sorted by name.
+};
+
+// True when `dir` looks like a dataset root: it has at least one <scene>/rgb/ folder.
+bool IsDatasetRoot(const std::string& dir);
+
+// Loads every scene (sorted by name). A scene without any camera.yaml, a depth image whose size
+// differs from its colour image (checked lazily by callers via CheckFramePair), a malformed
+// YAML: each is an error that names the file.
+Status LoadDataset(const std::string& root, std::vector<DatasetScene>* scenes);
+
+// Lists the image files (png, jpg, jpeg, bmp, tif, tiff; case-insensitive) in a folder, sorted.
+Status ListImages(const std::string& dir, std::vector<std::string>* paths);
+
+// Creates <root>/<scene>/{rgb,depth} (and returns their paths) for writers such as the generator.
+Status MakeSceneDirs(const std::string& root, const std::string& scene, std::string* rgb_dir,
+                     std::string* depth_dir);
+
+}  // namespace corridor

@@ -1,0 +1,21 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/corridor_geometry.h"
+#include "core/status.h"
+
+namespace corridor {
+
+// One frame's true geometry: truth.yaml's `frames:` list entries
+// {file, pitch, yaw, offset, width, camera_height, ceiling_height}, radians and metres.
+struct FrameTruth {
+  std::string file;           // The colour image's file name, e.g. "000003.png".
+  CorridorGeometry geometry;  // Signs as in geometry.md.
+};
+
+Status ReadTruthYaml(const std::string& path, std::vector<FrameTruth>* frames);
+Status WriteTruthYaml(const std::string& path, const std::vector<FrameTruth>& frames);
+
+}  // namespace corridor
