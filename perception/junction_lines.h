@@ -1,0 +1,34 @@
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Core>
+#include <opencv2/core.hpp>
+
+#include "core/status.h"
+
+namespace corridor {
+
+// One floor/wall junction line in raw image pixels.
+struct JunctionLine {
+  Eigen::Vector3d line = Eigen::Vector3d::Zero();  // a u + b v + c = 0 with a^2 + b^2 = 1.
+  Eigen::Vector2d near_end = Eigen::Vector2d::Zero();  // Support extent: the end nearest the camera (lowest in the image).
+  Eigen::Vector2d far_end = Eigen::Vector2d::Zero();   // Support extent: the end toward the vanishing point.
+  std::vector<Eigen::Vector2d> support;  // Edge pixels that support the line.
+  double support_length = 0.0;           // Pixels of the line covered by support.
+  double confidence = 0.0;               // In [0, 1]: how sure the detector is.
+};
+
+// Both junctions, or the reason they were not found.
+struct JunctionPair {
+  Status status;                  // kNoCorridorFound with a reason when no pair was found.
+  JunctionLine left;              // The left floor/wall junction (valid when status.ok()).
+  JunctionLine right;             // The right floor/wall junction.
+  Eigen::Vector2d vanishing_point = Eigen::Vector2d::Zero();  // Intersection of the two lines.
+  std::vector<cv::Vec4f> segments;  // All Hough segments in the ROI (for drawing and debugging).
+};
+
+// N points evenly spaced along the line between near_end and far_end (inclusive).
+std::vector<Eigen::Vector2d> SampleAlongLine(const JunctionLine& line, int n);
+
+}  // namespace corridor
