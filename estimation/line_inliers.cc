@@ -1,0 +1,42 @@
+#include "estimation/line_inliers.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/Geometry>
+
+#include "estimation/closed_form.h"
+
+namespace corridor {
+
+std::vector<char> LineInlierMask(const std::vector<Eigen::Vector2d>& points) {
+  std::vector<char> keep(points.size(), 1);
+  if (points.size() < 3) return keep;
+  std::vector<Eigen::Vector2d> subset = points;
+  std::vector<double> distance(points.size()), kept_distance;
+  constexpr int kRounds = 3;
+  for (int round = 0; round < kRounds; ++round) {
+    Eigen::Vector3d line;
+    if (!FitImageLine(subset, &line)) return keep;
+    kept_distance.clear();
+    for (size_t i = 0; i < points.size(); ++i) {
+      distance[i] = std::abs(line.dot(points[i].homogeneous()));
+      if (keep[i]) kept_distance.push_back(distance[i]);
+    }
+    const size_t mid = kept_distance.size() / 2;
+    std::nth_element(kept_distance.begin(), kept_distance.begin() + mid, kept_distance.end());
+    const double threshold = std::max(3.0 * 1.4826 * kept_distance[mid], 1.0);
+    std::vector<char> next(points.size());
+    subset.clear();
+    for (size_t i = 0; i < points.size(); ++i) {
+      next[i] = distance[i] <= threshold;
+      if (next[i]) subset.push_back(points[i]);
+    }
+    if (subset.size() < 2) return keep;
+    if (next == keep) break;
+    keep.swap(next);
+  }
+  return keep;
+}
+
+}  // namespace corridor

@@ -1,0 +1,20 @@
+#pragma once
+
+#include "estimation/solver.h"
+
+namespace corridor {
+
+// Ceres Levenberg-Marquardt on the same SymmetryResidual and WidthResidual functors (autodiff),
+// inside the paper's stage alternation, with an optional robust loss and bounds on the angles.
+class LmSolver : public CorridorSolver {
+ public:
+  explicit LmSolver(const SolverOptions& options) : options_(options) {}
+  std::string Name() const override { return "lm"; }
+  Status Solve(const CorridorObservation& observation, const CorridorGeometry* initial,
+               SolverSummary* summary) const override;
+
+ private:
+  const SolverOptions options_;
+};
+
+}  // namespace corridor

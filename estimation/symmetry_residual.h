@@ -1,0 +1,126 @@
+#pragma once
+
+// Stage 1 of the paper (III-B, eqs. 8-9), made exact in geometry.md section 5.
+// Parameters: x = (yaw, offset). Pitch and camera height are held fixed.
+// Each left point is mapped to the virtual image and mirrored about u = cx; its residual is the
+// horizontal pixel distance to the mapped right line at the same virtual row (and vice versa).
+// The opposite line is fitted to that side's inliers only (see LineInlierMask), so that gross
+// outliers from door frames or grout lines do not drag it; their own residuals remain for a
+// robust loss to down-weight.
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include <Eigen/Core>
+#include <ceres/autodiff_cost_function.h>
+
+#include "estimation/line_inliers.h"
+#include "estimation/residual_loss.h"
+#include "estimation/virtual_camera.h"
+
+namespace corridor {
+
+class SymmetryResidual {
+ public:
+  static constexpr int kNumParameters = 2;  // yaw, offset
+
+  SymmetryResidual(const FloorIntrinsics& intrinsics, double pitch,
+                   std::vector<Eigen::Vector2d> left, std::vector<Eigen::Vector2d> right,
+                   ResidualLoss loss = ResidualLoss())
+      : intrinsics_(intrinsics),
+        loss_(loss),
+        pitch_(pitch),
+        left_(std::move(left)),
+        right_(std::move(right)),
+        left_inliers_(LineInlierMask(left_)),
+        right_inliers_(LineInlierMask(right_)) {}
+
+  int NumResiduals() const { return static_cast<int>(left_.size() + right_.size()); }
+
+  template <typename T>
+  bool operator()(const T* x, T* residuals) const {
+    const T pitch(pitch_);
+    const CorridorRotation<T> rotation(pitch, x[0]);
+    std::vector<T> ul(left_.size()), vl(left_.size()), ur(right_.size()), vr(right_.size());
+    if (!MapAll(rotation, pitch, x[1], left_, &ul, &vl)) return false;
+    if (!MapAll(rotation, pitch, x[1], right_, &ur, &vr)) return false;
+    T a_left, b_left, a_right, b_right;  // u = a v + b in the virtual image
+    if (!FitColumnOfRow(ul, vl, left_inliers_, &a_left, &b_left)) return false;
+    if (!FitColumnOfRow(ur, vr, right_inliers_, &a_right, &b_right)) return false;
+    const T two_cx(2.0 * intrinsics_.cx);
+    int k = 0;
+    for (size_t i = 0; i < ul.size(); ++i) {
+      residuals[k++] = loss_.Apply((two_cx - ul[i]) - (a_right * vl[i] + b_right));
+    }
+    for (size_t i = 0; i < ur.size(); ++i) {
+      residuals[k++] = loss_.Apply((two_cx - ur[i]) - (a_left * vr[i] + b_left));
+    }
+    return true;
+  }
+
+  // A Ceres cost with as many residuals as points; the functor is owned by the cost.
+  static ceres::CostFunction* Create(const FloorIntrinsics& intrinsics, double pitch,
+                                     std::vector<Eigen::Vector2d> left,
+                                     std::vector<Eigen::Vector2d> right,
+                                     ResidualLoss loss = ResidualLoss()) {
+    auto* functor =
+        new SymmetryResidual(intrinsics, pitch, std::move(left), std::move(right), loss);
+    return new ceres::AutoDiffCostFunction<SymmetryResidual, ceres::DYNAMIC, kNumParameters>(
+        functor, functor->NumResiduals());
+  }
+
+ private:
+  template <typename T>
+  bool MapAll(const CorridorRotation<T>& rotation, const T& pitch, const T& offset,
+              const std::vector<Eigen::Vector2d>& points, std::vector<T>* u,
+              std::vector<T>* v) const {
+    for (size_t i = 0; i < points.size(); ++i) {
+      if (!MapToVirtualImage(intrinsics_, rotation, pitch, offset, points[i].x(), points[i].y(),
+                             &(*u)[i], &(*v)[i])) {
+        return false;
+      }
+    }
+    return true;
+  }
+
+  // Line u = a v + b through the mapped inliers (least squares).
+  template <typename T>
+  static bool FitColumnOfRow(const std::vector<T>& u, const std::vector<T>& v,
+                             const std::vector<char>& keep, T* a, T* b) {
+    return FitSubset(u, v, keep, a, b);
+  }
+
+  template <typename T>
+  static bool FitSubset(const std::vector<T>& u, const std::vector<T>& v,
+                        const std::vector<char>& keep, T* a, T* b) {
+    T n(0.0), sv(0.0), su(0.0), svv(0.0), svu(0.0);
+    for (size_t i = 0; i < u.size(); ++i) {
+      if (!keep[i]) continue;
+      n += T(1.0);
+      sv += v[i];
+      su += u[i];
+      svv += v[i] * v[i];
+      svu += v[i] * u[i];
+    }
+    const T det = n * svv - sv * sv;
+    using std::abs;
+    if (!(abs(det) > T(1e-12))) return false;
+    *a = (n * svu - sv * su) / det;
+    *b = (su - *a * sv) / n;
+    return true;
+  }
+
+  const FloorIntrinsics intrinsics_;
+  const ResidualLoss loss_;
+  const double pitch_;
+  const std::vector<Eigen::Vector2d> left_;
+  const std::vector<Eigen::Vector2d> right_;
+  // Which points fit each side's opposite line. The real-to-virtual mapping is a homography of
+  // the floor, so a point off its junction line in the real image is off it in the virtual image
+  // too: the mask is found once, in the real image, and does not depend on the parameters.
+  const std::vector<char> left_inliers_;
+  const std::vector<char> right_inliers_;
+};
+
+}  // namespace corridor

@@ -1,0 +1,101 @@
+#include "estimation/solver.h"
+
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "exact_observation.h"
+
+namespace corridor {
+namespace {
+
+using testing::ExactObservation;
+using testing::MakeGeometry;
+
+const CorridorGeometry kTruths[] = {
+    MakeGeometry(0.0, 0.0, 0.0, 2.0, 0.66),     MakeGeometry(0.12, 0.06, 0.25, 2.4, 0.62),
+    MakeGeometry(-0.2, 0.1, -0.35, 3.1, 0.66),  MakeGeometry(0.05, -0.04, 0.1, 1.8, 0.62),
+};
+
+struct Tolerance {
+  double angle, metric;  // rad, m
+};
+
+// Every solver recovers the truth from exact edge points: the iterative ones to 1e-4 rad and
+// 1 mm; the grid to within its finest step (2 refinement levels of /10 below 0.05 rad) in the
+// angles, and in offset and width to within the finest 0.5 mm step plus what a one-step angle
+// error moves them (hence 3 steps).
+Tolerance ToleranceFor(const std::string& name) {
+  if (name.find("grid") != std::string::npos) return {0.05 / 100 * (1 + 1e-6), 3 * 0.05 / 100};
+  return {1e-4, 1e-3};
+}
+
+class EverySolver : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(EverySolver, RecoversTruthFromExactEdgePoints) {
+  std::unique_ptr<CorridorSolver> solver;
+  ASSERT_TRUE(CreateSolver(GetParam(), SolverOptions(), &solver).ok());
+  const Tolerance tol = ToleranceFor(GetParam());
+  for (const auto& truth : kTruths) {
+    SolverSummary summary;
+    const Status status = solver->Solve(ExactObservation(truth), nullptr, &summary);
+    ASSERT_TRUE(status.ok()) << status.ToString();
+    EXPECT_NEAR(summary.estimate.yaw, truth.yaw, tol.angle) << GetParam();
+    EXPECT_NEAR(summary.estimate.pitch, truth.pitch, tol.angle) << GetParam();
+    EXPECT_NEAR(summary.estimate.offset, truth.offset, tol.metric) << GetParam();
+    EXPECT_NEAR(summary.estimate.width, truth.width, tol.metric) << GetParam();
+    EXPECT_GT(summary.evaluations, 0);
+    EXPECT_EQ(summary.solver_name, GetParam());
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Solvers, EverySolver,
+                         ::testing::Values("grid", "closed_form", "lm", "closed_form+lm",
+                                           "closed_form+grid"),
+                         [](const ::testing::TestParamInfo<std::string>& param_info) {
+                           std::string name = param_info.param;
+                           for (char& c : name) c = c == '+' ? '_' : c;
+                           return name;
+                         });
+
+// With 20% gross outliers among the edge points, lm with a robust loss stays within 1% of the
+// true width.
+TEST(LmSolverTest, RobustLossSurvivesOutliers) {
+  const CorridorGeometry truth = MakeGeometry(0.08, 0.05, 0.2, 2.4, 0.62);
+  CorridorObservation obs = ExactObservation(truth, 40, 2.0, 15.0);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> shift(-40.0, 40.0);
+  for (auto* side : {&obs.left, &obs.right}) {
+    for (size_t i = 0; i < side->size(); i += 5) (*side)[i].x() += shift(rng);
+  }
+  SolverOptions options;
+  options.loss = "cauchy";
+  options.loss_scale = 1.0;
+  std::unique_ptr<CorridorSolver> solver;
+  ASSERT_TRUE(CreateSolver("lm", options, &solver).ok());
+  SolverSummary summary;
+  ASSERT_TRUE(solver->Solve(obs, nullptr, &summary).ok());
+  EXPECT_NEAR(summary.estimate.width, truth.width, 0.01 * truth.width);
+}
+
+TEST(SolverFactoryTest, UnknownNameListsValidNames) {
+  std::unique_ptr<CorridorSolver> solver;
+  const Status status = CreateSolver("newton", SolverOptions(), &solver);
+  EXPECT_EQ(status.code(), StatusCode::kInvalidArgument);
+  EXPECT_NE(status.message().find("grid"), std::string::npos) << status.message();
+  EXPECT_NE(status.message().find("closed_form"), std::string::npos) << status.message();
+  EXPECT_EQ(CreateSolver("", SolverOptions(), &solver).code(), StatusCode::kInvalidArgument);
+  EXPECT_EQ(CreateSolver("lm+", SolverOptions(), &solver).code(), StatusCode::kInvalidArgument);
+}
+
+TEST(SolverFactoryTest, BadOptionsRejectedBeforeWork) {
+  SolverOptions options;
+  options.grid.yaw_step = 0;
+  std::unique_ptr<CorridorSolver> solver;
+  const Status status = CreateSolver("grid", options, &solver);
+  EXPECT_EQ(status.code(), StatusCode::kInvalidArgument);
+  EXPECT_NE(status.message().find("yaw step"), std::string::npos) << status.message();
+}
+
+}  // namespace
+}  // namespace corridor
