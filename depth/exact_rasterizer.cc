@@ -1,0 +1,101 @@
+#include "depth/exact_rasterizer.h"
+
+#include <cmath>
+#include <limits>
+
+#include "core/corridor_frame.h"
+
+namespace corridor {
+namespace {
+
+// The per-frame constants of the box model.
+struct BoxModel {
+  float n_y, n_z;            // Floor normal (n_x = 0).
+  float m_x, m_y, m_z;       // Wall normal.
+  float h;                   // Camera height.
+  float d_left, d_right;     // Distances to the walls.
+  float ceiling_y;           // Y_W of the ceiling (h - H_c, negative), or 0 when unknown.
+  bool has_ceiling;          // Render the ceiling.
+  float min_wall_y;          // Without a ceiling: wall points with Y_W below this get 0.
+  float max_range;           // Depth cap.
+
+  // Depth of the ray (x, y, 1); 0 when no modelled surface is hit within range.
+  float Depth(float x, float y) const {
+    const float nr = n_y * y + n_z;
+    const float mr = m_x * x + m_y * y + m_z;
+    float z = std::numeric_limits<float>::infinity();
+    if (nr > 0) z = h / nr;
+    bool wall = false;
+    if (mr < 0) {
+      const float zw = -d_left / mr;
+      if (zw < z) z = zw, wall = true;
+    } else if (mr > 0) {
+      const float zw = d_right / mr;
+      if (zw < z) z = zw, wall = true;
+    }
+    if (has_ceiling && nr < 0) {
+      const float zc = ceiling_y / nr;
+      if (zc < z) z = zc, wall = false;
+    }
+    if (!(z <= max_range)) return 0.0f;
+    if (wall && !has_ceiling && z * nr < min_wall_y) return 0.0f;
+    return z;
+  }
+};
+
+BoxModel MakeBoxModel(const CorridorGeometry& g, const RasterizerOptions& options) {
+  const CorridorRotation<double> r(g.pitch, g.yaw);
+  const Vec3<double> n = r.FloorNormal(), m = r.WallNormal();
+  BoxModel box;
+  box.n_y = static_cast<float>(n.y);
+  box.n_z = static_cast<float>(n.z);
+  box.m_x = static_cast<float>(m.x);
+  box.m_y = static_cast<float>(m.y);
+  box.m_z = static_cast<float>(m.z);
+  box.h = static_cast<float>(g.camera_height);
+  box.d_left = static_cast<float>(g.LeftDistance());
+  box.d_right = static_cast<float>(g.RightDistance());
+  box.has_ceiling = options.use_ceiling && g.HasCeiling();
+  box.ceiling_y = static_cast<float>(g.camera_height - g.ceiling_height);
+  box.min_wall_y = static_cast<float>(g.camera_height - options.max_height);
+  box.max_range = static_cast<float>(options.max_range);
+  return box;
+}
+
+}  // namespace
+
+std::shared_ptr<const RayTable> ExactRasterizer::TableFor(const Camera& camera) const {
+  std::lock_guard<std::mutex> lock(table_mutex_);
+  if (!table_ || !table_->Matches(camera)) table_ = std::make_shared<RayTable>(camera);
+  return table_;
+}
+
+Status ExactRasterizer::Render(const CorridorGeometry& geometry, const Camera& camera,
+                               cv::Mat* depth) const {
+  std::string why;
+  if (!camera.CheckIntrinsics(&why)) return Status::InvalidArgument("camera: " + why);
+  const Status valid = CheckGeometryForRendering(geometry);
+  if (!valid.ok()) return valid;
+  const BoxModel box = MakeBoxModel(geometry, options_);
+  depth->create(camera.image_height, camera.image_width, CV_32F);
+  if (camera.HasDistortion()) {
+    const auto table = TableFor(camera);
+    for (int v = 0; v < camera.image_height; ++v) {
+      float* out = depth->ptr<float>(v);
+      const float* rx = table->row_x(v);
+      const float* ry = table->row_y(v);
+      for (int u = 0; u < camera.image_width; ++u) out[u] = box.Depth(rx[u], ry[u]);
+    }
+    return Status::Ok();
+  }
+  const float inv_fx = static_cast<float>(1.0 / camera.fx);
+  for (int v = 0; v < camera.image_height; ++v) {
+    float* out = depth->ptr<float>(v);
+    const float y = static_cast<float>((v - camera.cy) / camera.fy);
+    const float x0 = static_cast<float>(-camera.cx / camera.fx);
+    for (int u = 0; u < camera.image_width; ++u) out[u] = box.Depth(x0 + u * inv_fx, y);
+  }
+  return Status::Ok();
+}
+
+}  // namespace corridor

@@ -1,0 +1,26 @@
+#include "depth/ray_table.h"
+
+namespace corridor {
+
+RayTable::RayTable(const Camera& camera)
+    : camera_(camera), width_(camera.image_width), height_(camera.image_height) {
+  const size_t n = static_cast<size_t>(width_) * height_;
+  x_.resize(n);
+  y_.resize(n);
+  for (int v = 0; v < height_; ++v) {
+    for (int u = 0; u < width_; ++u) {
+      const Eigen::Vector2d ideal = camera.Undistort(Eigen::Vector2d(u, v));
+      x_[static_cast<size_t>(v) * width_ + u] = static_cast<float>((ideal.x() - camera.cx) / camera.fx);
+      y_[static_cast<size_t>(v) * width_ + u] = static_cast<float>((ideal.y() - camera.cy) / camera.fy);
+    }
+  }
+}
+
+bool RayTable::Matches(const Camera& camera) const {
+  return camera.image_width == camera_.image_width &&
+         camera.image_height == camera_.image_height && camera.fx == camera_.fx &&
+         camera.fy == camera_.fy && camera.cx == camera_.cx && camera.cy == camera_.cy &&
+         camera.distortion == camera_.distortion;
+}
+
+}  // namespace corridor

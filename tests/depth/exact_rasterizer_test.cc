@@ -1,0 +1,102 @@
+#include "depth/exact_rasterizer.h"
+
+#include <gtest/gtest.h>
+
+#include "box_truth.h"
+
+namespace corridor {
+namespace {
+
+using testing::BoxDepth;
+using testing::TestCamera;
+using testing::TestGeometry;
+
+TEST(ExactRasterizerTest, MatchesHandDepthWithCeiling) {
+  const Camera camera = TestCamera();
+  RasterizerOptions options;
+  options.max_range = 1e6;
+  const ExactRasterizer rasterizer(options);
+  for (const auto& g : {TestGeometry(0.0, 0.0, 0.0, 2.0, 2.6), TestGeometry(0.2, 0.1, 0.3, 2.4, 2.8),
+                        TestGeometry(-0.3, -0.05, -0.4, 3.0, 3.0)}) {
+    cv::Mat depth;
+    ASSERT_TRUE(rasterizer.Render(g, camera, &depth).ok());
+    for (int v = 0; v < camera.image_height; v += 7) {
+      for (int u = 0; u < camera.image_width; u += 5) {
+        const double expected = BoxDepth(camera, g, u, v);
+        const float got = depth.at<float>(v, u);
+        if (!std::isfinite(expected)) {
+          EXPECT_EQ(got, 0.0f);
+        } else {
+          EXPECT_NEAR(got, expected, 1e-5 * expected + 1e-6) << u << "," << v;
+        }
+      }
+    }
+  }
+}
+
+TEST(ExactRasterizerTest, NoCeilingCutsWallsAtMaxHeightAndRange) {
+  const Camera camera = TestCamera();
+  RasterizerOptions options;
+  options.max_range = 8.0;
+  options.max_height = 1.5;
+  const ExactRasterizer rasterizer(options);
+  const CorridorGeometry g = TestGeometry(0.05, 0.02, 0.1, 2.2);
+  cv::Mat depth;
+  ASSERT_TRUE(rasterizer.Render(g, camera, &depth).ok());
+  int zeros = 0;
+  for (int v = 0; v < camera.image_height; ++v) {
+    for (int u = 0; u < camera.image_width; ++u) {
+      int surface;
+      const double z = BoxDepth(camera, g, u, v, &surface);
+      const float got = depth.at<float>(v, u);
+      bool expect_zero = !std::isfinite(z) || z > 8.0;
+      if (surface == 1) {
+        // Height of the wall point above the floor, by hand: h - Y_W.
+        const Eigen::Matrix3d r = (Eigen::AngleAxisd(g.pitch, Eigen::Vector3d::UnitX()) *
+                                   Eigen::AngleAxisd(g.yaw, Eigen::Vector3d::UnitY()))
+                                      .toRotationMatrix();
+        const Eigen::Vector3d p = r.transpose() * (z * camera.K().inverse() * Eigen::Vector3d(u, v, 1));
+        expect_zero = expect_zero || g.camera_height - p.y() > 1.5;
+      }
+      if (expect_zero) {
+        ++zeros;
+        EXPECT_EQ(got, 0.0f) << u << "," << v;
+      } else {
+        EXPECT_NEAR(got, z, 1e-5 * z) << u << "," << v;
+      }
+    }
+  }
+  EXPECT_GT(zeros, 100);
+}
+
+TEST(ExactRasterizerTest, HonoursLensDistortionThroughRayTable) {
+  Camera camera = TestCamera();
+  camera.distortion = {-0.25, 0.06, 0.0, 0.0, 0.0};
+  RasterizerOptions options;
+  options.max_range = 1e6;
+  const ExactRasterizer rasterizer(options);
+  const CorridorGeometry g = TestGeometry(0.1, 0.05, 0.2, 2.4, 2.7);
+  cv::Mat depth;
+  ASSERT_TRUE(rasterizer.Render(g, camera, &depth).ok());
+  Camera ideal = camera;
+  ideal.distortion = {};
+  for (int v = 3; v < camera.image_height; v += 13) {
+    for (int u = 2; u < camera.image_width; u += 11) {
+      // The raw pixel (u, v) sees the ideal pixel that distorts onto it.
+      const Eigen::Vector2d p = camera.Undistort({u, v});
+      ASSERT_NEAR(camera.Distort(p).x(), u, 1e-6);
+      const double expected = BoxDepth(ideal, g, p.x(), p.y());
+      EXPECT_NEAR(depth.at<float>(v, u), expected, 1e-4 * expected) << u << "," << v;
+    }
+  }
+}
+
+TEST(ExactRasterizerTest, RejectsCameraOutsideTheCorridor) {
+  const ExactRasterizer rasterizer{RasterizerOptions()};
+  cv::Mat depth;
+  EXPECT_EQ(rasterizer.Render(TestGeometry(0, 0, 1.5, 2.0), TestCamera(), &depth).code(),
+            StatusCode::kImplausibleGeometry);
+}
+
+}  // namespace
+}  // namespace corridor
