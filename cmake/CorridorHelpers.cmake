@@ -40,5 +40,6 @@ function(corridor_add_test name)
     CORRIDOR_SHARED_DIR="${PROJECT_SOURCE_DIR}/../shared"
     CORRIDOR_BINARY_DIR="${PROJECT_BINARY_DIR}")
   include(GoogleTest)
-  gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 PROPERTIES LABELS "${ARG_LABELS}")
+  gtest_discover_tests(${name} TEST_PREFIX "${name}." DISCOVERY_TIMEOUT 60
+                       PROPERTIES LABELS "${ARG_LABELS}")
 endfunction()

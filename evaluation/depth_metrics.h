@@ -25,14 +25,18 @@ struct DepthMetrics {
 };
 
 // Metrics over pixels with 0 < gt <= cap (metres); pred and gt are CV_32F metres, 0 = none.
-// When no pixel has both, the error fields are NaN and coverage is 0 (or NaN without gt).
+// Non-finite values count as "none" in either image. When no pixel has both, the error fields
+// are NaN and coverage is 0 (or NaN without gt). Inputs of different sizes or not CV_32FC1 are
+// a caller's mistake: then every field is NaN and num_gt = 0.
 DepthMetrics ComputeDepthMetrics(const cv::Mat& pred, const cv::Mat& gt, double cap);
 
 // Per-image metrics averaged over images (each image weighs the same). Images whose error
-// fields are NaN are left out of those fields' means but still count for coverage.
+// fields are NaN are left out of those fields' means but still count for coverage; coverage is
+// averaged over the images that have ground-truth pixels. num_gt and num_evaluated are summed,
+// num_images is per_image.size().
 DepthMetrics AverageDepthMetrics(const std::vector<DepthMetrics>& per_image);
 
-// |estimated - truth| / truth, as in the paper's Table 1.
+// |estimated - truth| / truth, as in the paper's Table 1. NaN when truth is not positive.
 double RelativeWidthError(double estimated, double truth);
 
 }  // namespace corridor
