@@ -3,11 +3,14 @@
 #   target_link_libraries(app PRIVATE corridor_depth::corridor_depth)
 include(CMakePackageConfigHelpers)
 
-add_library(corridor_depth INTERFACE)
-target_link_libraries(corridor_depth INTERFACE ${CORRIDOR_LIBRARIES})
-add_library(corridor_depth::corridor_depth ALIAS corridor_depth)
+# The umbrella target; exported as corridor_depth::corridor_depth (the name `corridor_depth`
+# itself belongs to the command-line tool).
+add_library(corridor_depth_all INTERFACE)
+target_link_libraries(corridor_depth_all INTERFACE ${CORRIDOR_LIBRARIES})
+set_target_properties(corridor_depth_all PROPERTIES EXPORT_NAME corridor_depth)
+add_library(corridor_depth::corridor_depth ALIAS corridor_depth_all)
 
-install(TARGETS ${CORRIDOR_LIBRARIES} corridor_depth
+install(TARGETS ${CORRIDOR_LIBRARIES} corridor_depth_all
   EXPORT corridor_depthTargets
   ARCHIVE DESTINATION lib
   LIBRARY DESTINATION lib

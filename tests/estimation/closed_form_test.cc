@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "exact_observation.h"
+#include "tests/support/exact_observation.h"
 
 namespace corridor {
 namespace {

@@ -6,7 +6,7 @@
 
 #include "estimation/symmetry_residual.h"
 #include "estimation/width_residual.h"
-#include "exact_observation.h"
+#include "tests/support/exact_observation.h"
 
 namespace corridor {
 namespace {
