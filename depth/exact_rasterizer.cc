@@ -88,12 +88,31 @@ Status ExactRasterizer::Render(const CorridorGeometry& geometry, const Camera& c
     }
     return Status::Ok();
   }
+  // Without distortion the ray's y is constant along a row, so the floor and ceiling depths are
+  // too (n has no x part), and the wall's m.r is affine in u: a few operations per pixel.
   const float inv_fx = static_cast<float>(1.0 / camera.fx);
+  const float x0 = static_cast<float>(-camera.cx / camera.fx);
+  const float inf = std::numeric_limits<float>::infinity();
   for (int v = 0; v < camera.image_height; ++v) {
     float* out = depth->ptr<float>(v);
     const float y = static_cast<float>((v - camera.cy) / camera.fy);
-    const float x0 = static_cast<float>(-camera.cx / camera.fx);
-    for (int u = 0; u < camera.image_width; ++u) out[u] = box.Depth(x0 + u * inv_fx, y);
+    const float nr = box.n_y * y + box.n_z;
+    float z_plane = nr > 0 ? box.h / nr : inf;  // Floor, or ceiling above the horizon.
+    if (box.has_ceiling && nr < 0) z_plane = box.ceiling_y / nr;
+    const float mr0 = box.m_x * x0 + box.m_y * y + box.m_z;
+    const float mr_step = box.m_x * inv_fx;
+    // Without a ceiling, a wall point is kept only when z * nr >= min_wall_y.
+    const bool cut_walls = !box.has_ceiling;
+    for (int u = 0; u < camera.image_width; ++u) {
+      const float mr = mr0 + mr_step * u;
+      const float wall_distance = mr < 0 ? box.d_left : box.d_right;
+      const float z_wall = wall_distance / std::abs(mr);  // +inf when the ray is parallel.
+      const bool wall = z_wall < z_plane;
+      const float z = wall ? z_wall : z_plane;
+      // Bitwise, not short-circuit, operators: no branches, so the loop vectorises.
+      const bool too_high = cut_walls & wall & (z * nr < box.min_wall_y);
+      out[u] = ((z <= box.max_range) & !too_high) ? z : 0.0f;
+    }
   }
   return Status::Ok();
 }
