@@ -46,6 +46,9 @@ BENCHMARK_CAPTURE(BM_Solve, closed_form_exact, std::string("closed_form"), 0.0)
     ->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_Solve, closed_form_lm_exact, std::string("closed_form+lm"), 0.0)
     ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Solve, joint_exact, std::string("joint"), 0.0)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Solve, joint_noise1px, std::string("joint"), 1.0)
+    ->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_Solve, grid_noise1px, std::string("grid"), 1.0)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_Solve, lm_noise1px, std::string("lm"), 1.0)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_Solve, closed_form_noise1px, std::string("closed_form"), 1.0)

@@ -5,6 +5,7 @@
 
 #include "estimation/closed_form.h"
 #include "estimation/grid_search_solver.h"
+#include "estimation/joint_solver.h"
 #include "estimation/lm_solver.h"
 
 namespace corridor {
@@ -84,6 +85,8 @@ std::unique_ptr<CorridorSolver> CreateSolver(SolverType type, const SolverOption
       return std::make_unique<ClosedFormSolver>();
     case SolverType::kLevenbergMarquardt:
       return std::make_unique<LmSolver>(options);
+    case SolverType::kJoint:
+      return std::make_unique<JointSolver>(options);
   }
   return nullptr;
 }

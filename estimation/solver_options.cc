@@ -37,13 +37,15 @@ const char* SolverTypeToString(SolverType type) {
       return "closed_form";
     case SolverType::kLevenbergMarquardt:
       return "lm";
+    case SolverType::kJoint:
+      return "joint";
   }
   return "unknown";
 }
 
 bool StringToSolverType(const std::string& name, SolverType* type) {
-  for (SolverType t :
-       {SolverType::kGridSearch, SolverType::kClosedForm, SolverType::kLevenbergMarquardt}) {
+  for (SolverType t : {SolverType::kGridSearch, SolverType::kClosedForm,
+                       SolverType::kLevenbergMarquardt, SolverType::kJoint}) {
     if (name == SolverTypeToString(t)) {
       *type = t;
       return true;
@@ -53,7 +55,7 @@ bool StringToSolverType(const std::string& name, SolverType* type) {
 }
 
 std::string ValidSolverNames() {
-  return "grid, closed_form, lm, or a chain joined by '+' such as closed_form+lm";
+  return "grid, closed_form, lm, joint, or a chain joined by '+' such as closed_form+lm";
 }
 
 bool ParseSolverChain(const std::string& name, std::vector<SolverType>* chain, std::string* why) {

@@ -10,11 +10,12 @@ enum class SolverType {
   kGridSearch,          // "grid": the paper's exhaustive search over both stages.
   kClosedForm,          // "closed_form": the vanishing-point solution (geometry.md, section 4).
   kLevenbergMarquardt,  // "lm": Ceres Levenberg-Marquardt on the same two functors.
+  kJoint,               // "joint": one LM problem over all four parameters (beyond the paper).
 };
 
 const char* SolverTypeToString(SolverType type);
 bool StringToSolverType(const std::string& name, SolverType* type);
-// "grid, closed_form, lm" and how to chain them.
+// "grid, closed_form, lm, joint" and how to chain them.
 std::string ValidSolverNames();
 // Parses "grid", "closed_form+lm", ... into the chain of solvers, each run from the previous
 // one's estimate. Fails on an empty or unknown name, with the valid names in *why.
@@ -41,7 +42,7 @@ struct GridSearchOptions {
   bool Check(std::string* why) const;
 };
 
-// Ceres Levenberg-Marquardt on the stage functors.
+// Ceres Levenberg-Marquardt, for "lm" (the stage functors) and "joint".
 struct LmOptions {
   double max_abs_yaw = 1.2;          // Bound on |yaw|, rad.
   double max_abs_pitch = 1.2;        // Bound on |pitch|, rad.

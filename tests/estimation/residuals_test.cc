@@ -4,6 +4,7 @@
 #include <ceres/ceres.h>
 #include <gtest/gtest.h>
 
+#include "estimation/junction_line_residual.h"
 #include "estimation/symmetry_residual.h"
 #include "estimation/width_residual.h"
 #include "tests/support/exact_observation.h"
@@ -131,6 +132,56 @@ TEST(ResidualsTest, RejectPointsAboveTheHorizon) {
   std::vector<double> r(functor.NumResiduals());
   const double x[2] = {0.0, 2.0};
   EXPECT_FALSE(functor(x, r.data()));
+}
+
+}  // namespace
+}  // namespace corridor
+
+namespace corridor {
+namespace {
+
+// The joint residual is the perpendicular pixel distance to the true junction's image, which
+// the test builds from two projected 3D points with Eigen.
+TEST(JunctionLineResidualTest, MatchesPerpendicularDistanceToProjectedLine) {
+  const auto g = testing::MakeGeometry(0.12, 0.07, -0.2, 2.5, 0.66);
+  const CorridorObservation obs = testing::ExactObservation(g);
+  const FloorIntrinsics k{obs.fx, obs.fy, obs.cx, obs.cy, obs.camera_height};
+  const Eigen::Matrix3d r = testing::TrueRotation(g.pitch, g.yaw);
+  const double params[4] = {g.yaw, g.pitch, g.offset, g.width};
+  for (int side = -1; side <= 1; side += 2) {
+    const double x = side < 0 ? -(g.width / 2 + g.offset) : g.width / 2 - g.offset;
+    const auto project = [&](double z) {
+      const Eigen::Vector3d c = r * Eigen::Vector3d(x, g.camera_height, z);
+      return Eigen::Vector2d(obs.fx * c.x() / c.z() + obs.cx, obs.fy * c.y() / c.z() + obs.cy);
+    };
+    const Eigen::Vector2d a = project(3.0), b = project(9.0);
+    const Eigen::Vector2d normal = Eigen::Vector2d(-(b - a).y(), (b - a).x()).normalized();
+    for (double offset_px : {0.0, 2.5, -7.0}) {
+      const Eigen::Vector2d p = a + 0.3 * (b - a) + offset_px * normal;
+      const JunctionLineResidual residual(k, p.x(), p.y(), side);
+      double value;
+      ASSERT_TRUE(residual(params, &value));
+      EXPECT_NEAR(std::abs(value), std::abs(offset_px), 1e-7);
+    }
+  }
+}
+
+TEST(JunctionLineResidualTest, JacobianMatchesNumericDifferentiation) {
+  const auto g = testing::MakeGeometry(-0.1, 0.04, 0.3, 2.2, 0.62);
+  const CorridorObservation obs = testing::ExactObservation(g);
+  const FloorIntrinsics k{obs.fx, obs.fy, obs.cx, obs.cy, obs.camera_height};
+  const double x[4] = {g.yaw + 0.02, g.pitch - 0.01, g.offset + 0.05, g.width - 0.1};
+  const JunctionLineResidual functor(k, obs.left[5].x() + 1.0, obs.left[5].y(), -1);
+  ceres::AutoDiffCostFunction<JunctionLineResidual, 1, 4> autodiff(new JunctionLineResidual(functor));
+  ceres::NumericDiffCostFunction<JunctionLineResidual, ceres::CENTRAL, 1, 4> numeric(
+      new JunctionLineResidual(functor));
+  double r1, r2, j1[4], j2[4];
+  const double* params[1] = {x};
+  double* jac1[1] = {j1};
+  double* jac2[1] = {j2};
+  ASSERT_TRUE(autodiff.Evaluate(params, &r1, jac1));
+  ASSERT_TRUE(numeric.Evaluate(params, &r2, jac2));
+  for (int i = 0; i < 4; ++i) EXPECT_NEAR(j1[i], j2[i], 1e-5 * std::max(1.0, std::abs(j2[i])));
 }
 
 }  // namespace

@@ -46,8 +46,8 @@ TEST(SolverOptionsTest, ParsesChains) {
 }
 
 TEST(SolverOptionsTest, NamesRoundTrip) {
-  for (SolverType t :
-       {SolverType::kGridSearch, SolverType::kClosedForm, SolverType::kLevenbergMarquardt}) {
+  for (SolverType t : {SolverType::kGridSearch, SolverType::kClosedForm,
+                       SolverType::kLevenbergMarquardt, SolverType::kJoint}) {
     SolverType back;
     ASSERT_TRUE(StringToSolverType(SolverTypeToString(t), &back));
     EXPECT_EQ(back, t);

@@ -50,8 +50,8 @@ TEST_P(EverySolver, RecoversTruthFromExactEdgePoints) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Solvers, EverySolver,
-                         ::testing::Values("grid", "closed_form", "lm", "closed_form+lm",
-                                           "closed_form+grid"),
+                         ::testing::Values("grid", "closed_form", "lm", "joint",
+                                           "closed_form+lm", "closed_form+grid", "grid+joint"),
                          [](const ::testing::TestParamInfo<std::string>& param_info) {
                            std::string name = param_info.param;
                            for (char& c : name) c = c == '+' ? '_' : c;
@@ -73,6 +73,24 @@ TEST(LmSolverTest, RobustLossSurvivesOutliers) {
   options.loss_scale = 1.0;
   std::unique_ptr<CorridorSolver> solver;
   ASSERT_TRUE(CreateSolver("lm", options, &solver).ok());
+  SolverSummary summary;
+  ASSERT_TRUE(solver->Solve(obs, nullptr, &summary).ok());
+  EXPECT_NEAR(summary.estimate.width, truth.width, 0.01 * truth.width);
+}
+
+TEST(JointSolverTest, RobustLossSurvivesOutliers) {
+  const CorridorGeometry truth = MakeGeometry(0.08, 0.05, 0.2, 2.4, 0.62);
+  CorridorObservation obs = ExactObservation(truth, 40, 2.0, 15.0);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> shift(-40.0, 40.0);
+  for (auto* side : {&obs.left, &obs.right}) {
+    for (size_t i = 0; i < side->size(); i += 5) (*side)[i].x() += shift(rng);
+  }
+  SolverOptions options;
+  options.loss = "cauchy";
+  options.loss_scale = 1.0;
+  std::unique_ptr<CorridorSolver> solver;
+  ASSERT_TRUE(CreateSolver("closed_form+joint", options, &solver).ok());
   SolverSummary summary;
   ASSERT_TRUE(solver->Solve(obs, nullptr, &summary).ok());
   EXPECT_NEAR(summary.estimate.width, truth.width, 0.01 * truth.width);
