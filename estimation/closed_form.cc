@@ -6,22 +6,36 @@
 #include <Eigen/Eigenvalues>
 
 #include "core/corridor_frame.h"
+#include "estimation/line_inliers.h"
 #include "estimation/virtual_camera.h"
 
 namespace corridor {
 namespace {
 
-// Mean lateral position X_W of the points' floor intersections, or false if any misses the floor.
-bool MeanLateralPosition(const FloorIntrinsics& k, const CorridorRotation<double>& rotation,
-                         const std::vector<Eigen::Vector2d>& points, double* mean_x) {
-  double sum = 0;
+// Median lateral position X_W of the points' floor intersections, or false if any misses the
+// floor.
+bool MedianLateralPosition(const FloorIntrinsics& k, const CorridorRotation<double>& rotation,
+                           const std::vector<Eigen::Vector2d>& points, double* median_x) {
+  std::vector<double> x;
   for (const auto& p : points) {
     Vec3<double> floor_point;
     if (!BackProjectToFloor(k, rotation, p.x(), p.y(), &floor_point)) return false;
-    sum += floor_point.x;
+    x.push_back(floor_point.x);
   }
-  *mean_x = sum / static_cast<double>(points.size());
+  std::nth_element(x.begin(), x.begin() + x.size() / 2, x.end());
+  *median_x = x[x.size() / 2];
   return true;
+}
+
+// The points that lie on their side's dominant line (LineInlierMask), so that gross outliers
+// neither tilt the fitted line nor shift the lateral positions.
+std::vector<Eigen::Vector2d> Inliers(const std::vector<Eigen::Vector2d>& points) {
+  const std::vector<char> keep = LineInlierMask(points);
+  std::vector<Eigen::Vector2d> inliers;
+  for (size_t i = 0; i < points.size(); ++i) {
+    if (keep[i]) inliers.push_back(points[i]);
+  }
+  return inliers;
 }
 
 }  // namespace
@@ -43,8 +57,10 @@ bool FitImageLine(const std::vector<Eigen::Vector2d>& points, Eigen::Vector3d* l
 Status SolveClosedForm(const CorridorObservation& observation, CorridorGeometry* geometry) {
   std::string why;
   if (!observation.Check(&why)) return Status::InvalidArgument(why);
+  const std::vector<Eigen::Vector2d> left = Inliers(observation.left);
+  const std::vector<Eigen::Vector2d> right = Inliers(observation.right);
   Eigen::Vector3d left_line, right_line;
-  if (!FitImageLine(observation.left, &left_line) || !FitImageLine(observation.right, &right_line)) {
+  if (!FitImageLine(left, &left_line) || !FitImageLine(right, &right_line)) {
     return Status::ImplausibleGeometry("a junction's points are all the same point");
   }
   const Eigen::Vector3d vp = left_line.cross(right_line);
@@ -69,8 +85,8 @@ Status SolveClosedForm(const CorridorObservation& observation, CorridorGeometry*
                           observation.camera_height};
   const CorridorRotation<double> rotation(pitch, yaw);
   double left_x = 0, right_x = 0;
-  if (!MeanLateralPosition(k, rotation, observation.left, &left_x) ||
-      !MeanLateralPosition(k, rotation, observation.right, &right_x)) {
+  if (!MedianLateralPosition(k, rotation, left, &left_x) ||
+      !MedianLateralPosition(k, rotation, right, &right_x)) {
     return Status::ImplausibleGeometry(
         "junction points lie above the horizon of the vanishing point (not on the floor)");
   }

@@ -1,0 +1,25 @@
+#pragma once
+
+#include <opencv2/core.hpp>
+
+#include "perception/line_segments.h"
+
+namespace corridor {
+
+// The floor's appearance: a reference colour sampled where almost every corridor photo shows
+// floor (the bottom centre of the image), in 8-bit CIE Lab (OpenCV's scaling).
+struct FloorAppearance {
+  cv::Vec3f lab;      // Median Lab colour of the reference patch.
+  float spread = 1;   // Median distance of the patch's pixels to it (texture), >= 1.
+};
+
+// `lab`: the ROI rows [roi_top, image rows) of the image in 8-bit Lab (CV_8UC3).
+FloorAppearance SampleFloor(const cv::Mat& lab, int roi_top);
+
+// How much a line looks like the floor's upper boundary: near +1 when the strip just below it is
+// floor-like and the strip above is not, near 0 or negative for lines inside the floor (grout,
+// reflections) or on the wall (baseboard tops, door bottoms). `lab` as for SampleFloor.
+double BoundaryScore(const cv::Mat& lab, const FloorAppearance& floor, const MergedLine& line,
+                     int roi_top);
+
+}  // namespace corridor

@@ -1,0 +1,218 @@
+#include "perception/junction_detector.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include <Eigen/Geometry>
+#include <opencv2/imgproc.hpp>
+
+#include "perception/appearance.h"
+#include "perception/junction_selector.h"
+#include "perception/line_segments.h"
+
+namespace corridor {
+namespace {
+
+constexpr int kMinImageSide = 24;  // Smaller images cannot show a corridor.
+
+// Edge pixels of the ROI within `distance` of the line and on the floor side of the vanishing
+// point, in full-image coordinates.
+std::vector<Eigen::Vector2d> SupportPixels(const std::vector<cv::Point>& edges, int roi_top,
+                                           const Eigen::Vector3d& line, const Eigen::Vector2d& vp,
+                                           bool left, double distance) {
+  std::vector<Eigen::Vector2d> support;
+  for (const auto& e : edges) {
+    const Eigen::Vector2d p(e.x, e.y + roi_top);
+    if (std::abs(line.dot(p.homogeneous())) > distance) continue;
+    if (left ? p.x() > vp.x() : p.x() < vp.x()) continue;
+    if (p.y() < vp.y()) continue;
+    support.push_back(p);
+  }
+  return support;
+}
+
+// Huber-weighted total least squares refit; false when too few points.
+bool RefitLine(const std::vector<Eigen::Vector2d>& points, Eigen::Vector3d* line) {
+  if (points.size() < 8) return false;
+  std::vector<cv::Point2f> cv_points;
+  cv_points.reserve(points.size());
+  for (const auto& p : points) cv_points.emplace_back(static_cast<float>(p.x()), static_cast<float>(p.y()));
+  cv::Vec4f fit;
+  cv::fitLine(cv_points, fit, cv::DIST_HUBER, 0, 0.01, 0.01);
+  const Eigen::Vector2d direction(fit[0], fit[1]), origin(fit[2], fit[3]);
+  Eigen::Vector3d l(-direction.y(), direction.x(), 0);
+  l.z() = -l.head<2>().dot(origin);
+  l /= l.head<2>().norm();
+  if (l.y() < 0) l = -l;
+  *line = l;
+  return true;
+}
+
+// The final JunctionLine: refit on nearby edge pixels, extent and confidence.
+JunctionLine Refine(const JunctionCandidate& candidate, const std::vector<cv::Point>& edges,
+                    int roi_top, const Eigen::Vector2d& vp, bool left, double distance,
+                    double image_height) {
+  JunctionLine out;
+  Eigen::Vector3d line = candidate.line.line;
+  std::vector<Eigen::Vector2d> support;
+  for (int round = 0; round < 3; ++round) {
+    support = SupportPixels(edges, roi_top, line, vp, left, round == 0 ? 2 * distance : distance);
+    Eigen::Vector3d refit;
+    if (!RefitLine(support, &refit)) break;
+    line = refit;
+  }
+  support = SupportPixels(edges, roi_top, line, vp, left, distance);
+  out.line = line;
+  const Eigen::Vector2d direction(line.y(), -line.x());
+  const Eigen::Vector2d origin = -line.z() * line.head<2>();
+  if (support.size() < 8) {
+    support = {candidate.line.start, candidate.line.end};
+  }
+  double lo = 1e300, hi = -1e300;
+  std::vector<int> bins;
+  for (const auto& p : support) {
+    const double t = (p - origin).dot(direction);
+    lo = std::min(lo, t);
+    hi = std::max(hi, t);
+    bins.push_back(static_cast<int>(std::floor(t)));
+  }
+  std::sort(bins.begin(), bins.end());
+  out.support_length = static_cast<double>(std::unique(bins.begin(), bins.end()) - bins.begin());
+  const Eigen::Vector2d a = origin + lo * direction, b = origin + hi * direction;
+  // The near end is the lower one (larger v).
+  out.near_end = a.y() > b.y() ? a : b;
+  out.far_end = a.y() > b.y() ? b : a;
+  out.support = std::move(support);
+  out.confidence = std::clamp(0.5 * (1.0 + candidate.boundary), 0.0, 1.0) *
+                   std::min(1.0, out.support_length / (0.25 * image_height));
+  return out;
+}
+
+Status NoCorridor(JunctionPair* result, const std::string& why) {
+  result->status = Status::NoCorridorFound(why);
+  return Status::Ok();
+}
+
+}  // namespace
+
+bool JunctionDetectorOptions::Check(std::string* why) const {
+  std::string reason;
+  if (!(roi_top_fraction >= 0 && roi_top_fraction < 0.95)) {
+    reason = "roi_top_fraction must be in [0, 0.95)";
+  } else if (!(blur_sigma >= 0 && blur_sigma <= 10)) {
+    reason = "blur_sigma must be in [0, 10]";
+  } else if (!(canny_low > 0 && canny_high >= canny_low)) {
+    reason = "Canny thresholds must satisfy 0 < canny_low <= canny_high";
+  } else if (hough_threshold < 1) {
+    reason = "hough_threshold must be >= 1";
+  } else if (!(hough_min_length_fraction > 0 && hough_min_length_fraction < 1)) {
+    reason = "hough_min_length_fraction must be in (0, 1)";
+  } else if (!(hough_max_gap >= 0)) {
+    reason = "hough_max_gap must be >= 0";
+  } else if (!(merge_angle_deg > 0 && merge_angle_deg < 45 && merge_distance_px > 0)) {
+    reason = "merge tolerances must be positive (angle < 45 deg)";
+  } else if (!(min_length_fraction >= 0 && max_length_fraction >= 0)) {
+    reason = "length bounds must be >= 0";
+  } else if (!(min_inclination_deg >= 0 && min_inclination_deg < 90 &&
+               max_inclination_deg <= 90)) {
+    reason = "inclination bounds must lie in [0, 90] degrees";
+  } else if (!(support_distance_px > 0)) {
+    reason = "support_distance_px must be positive";
+  }
+  if (reason.empty()) return true;
+  if (why != nullptr) *why = reason;
+  return false;
+}
+
+std::vector<Eigen::Vector2d> SampleAlongLine(const JunctionLine& line, int n) {
+  std::vector<Eigen::Vector2d> points;
+  if (n <= 0) return points;
+  if (n == 1) return {line.near_end};
+  for (int i = 0; i < n; ++i) {
+    points.push_back(line.near_end + (line.far_end - line.near_end) * (i / (n - 1.0)));
+  }
+  return points;
+}
+
+Status DetectJunctions(const cv::Mat& bgr, const JunctionDetectorOptions& options,
+                       JunctionPair* result) {
+  *result = JunctionPair();
+  if (bgr.empty()) return Status::InvalidArgument("image is empty");
+  if (bgr.depth() != CV_8U) return Status::InvalidArgument("image must be 8-bit");
+  std::string why;
+  if (!options.Check(&why)) return Status::InvalidArgument("junction detector: " + why);
+  const int width = bgr.cols, height = bgr.rows;
+  if (width < kMinImageSide || height < kMinImageSide) {
+    std::ostringstream msg;
+    msg << "image " << width << "x" << height << " is too small to show a corridor";
+    return NoCorridor(result, msg.str());
+  }
+  cv::Mat color;
+  if (bgr.channels() == 1) {
+    cv::cvtColor(bgr, color, cv::COLOR_GRAY2BGR);
+  } else if (bgr.channels() == 4) {
+    cv::cvtColor(bgr, color, cv::COLOR_BGRA2BGR);
+  } else if (bgr.channels() == 3) {
+    color = bgr;
+  } else {
+    return Status::InvalidArgument("image must have 1, 3 or 4 channels");
+  }
+  cv::Mat gray;
+  cv::cvtColor(color, gray, cv::COLOR_BGR2GRAY);
+  const int roi_top =
+      std::clamp(static_cast<int>(options.roi_top_fraction * height), 0, height - kMinImageSide / 2);
+  const SegmentOptions segment_options{
+      options.blur_sigma, options.canny_low, options.canny_high, options.hough_threshold,
+      std::max(8.0, options.hough_min_length_fraction * height), options.hough_max_gap};
+  EdgeSegments found = DetectSegments(gray, roi_top, segment_options);
+  result->segments = found.segments;
+  const std::vector<MergedLine> lines =
+      MergeSegments(found.segments, options.merge_angle_deg, options.merge_distance_px);
+
+  // The paper's scene prior (eq. 2), read with theta measured from the vertical image axis:
+  // lines steeper than 90 deg - atan(H/W) are door frames and pillars, not junctions.
+  const double diagonal = std::hypot(width, height);
+  const double min_length = options.min_length_fraction * height;
+  const double max_length = options.max_length_fraction > 0 ? options.max_length_fraction * diagonal
+                                                            : 1e300;
+  const double max_inclination = options.max_inclination_deg >= 0
+                                     ? options.max_inclination_deg
+                                     : 90.0 - std::atan2(height, width) * 180.0 / M_PI;
+  cv::Mat lab;
+  cv::cvtColor(color.rowRange(roi_top, height), lab, cv::COLOR_BGR2Lab);
+  const FloorAppearance floor = SampleFloor(lab, roi_top);
+  std::vector<JunctionCandidate> left, right;
+  for (const auto& line : lines) {
+    if (line.length < min_length || line.length > max_length) continue;
+    if (line.inclination_deg < options.min_inclination_deg ||
+        line.inclination_deg > max_inclination) {
+      continue;
+    }
+    JunctionCandidate candidate{line, BoundaryScore(lab, floor, line, roi_top)};
+    (line.slope < 0 ? left : right).push_back(candidate);
+  }
+  if (left.empty() || right.empty()) {
+    std::ostringstream msg;
+    msg << "no " << (left.empty() ? "left" : "right") << " junction candidate among "
+        << lines.size() << " lines";
+    return NoCorridor(result, msg.str());
+  }
+  const SelectedPair pair = SelectJunctionPair(left, right, lines, Eigen::Vector2d(width, height));
+  if (pair.left < 0) {
+    return NoCorridor(result, "no pair of lines meets at a vanishing point above the floor");
+  }
+  std::vector<cv::Point> edge_pixels;
+  cv::findNonZero(found.edges, edge_pixels);
+  result->left = Refine(left[pair.left], edge_pixels, roi_top, pair.vanishing_point, true,
+                        options.support_distance_px, height);
+  result->right = Refine(right[pair.right], edge_pixels, roi_top, pair.vanishing_point, false,
+                         options.support_distance_px, height);
+  const Eigen::Vector3d vp = result->left.line.cross(result->right.line);
+  result->vanishing_point =
+      std::abs(vp.z()) > 1e-12 ? Eigen::Vector2d(vp.head<2>() / vp.z()) : pair.vanishing_point;
+  result->status = Status::Ok();
+  return Status::Ok();
+}
+
+}  // namespace corridor

@@ -1,0 +1,39 @@
+#pragma once
+
+#include <string>
+
+#include <opencv2/core.hpp>
+
+#include "core/status.h"
+#include "perception/junction_lines.h"
+
+namespace corridor {
+
+// Options of the junction-line detector (paper III-A). Defaults are the paper's where it gives
+// one, and work on generated and real corridors.
+struct JunctionDetectorOptions {
+  double roi_top_fraction = 0.5;     // The search region starts at this fraction of the height (paper: the middle).
+  double blur_sigma = 1.2;           // Gaussian blur before Canny, px (0 = none).
+  double canny_low = 30;             // Canny hysteresis low threshold.
+  double canny_high = 90;            // Canny hysteresis high threshold.
+  int hough_threshold = 25;          // Probabilistic Hough accumulator threshold (votes).
+  double hough_min_length_fraction = 0.04;  // Shortest Hough segment, as a fraction of the image height.
+  double hough_max_gap = 6;          // Largest gap bridged inside one Hough segment, px.
+  double merge_angle_deg = 2.5;      // Segments whose angles differ less than this may merge (the paper's NMS).
+  double merge_distance_px = 4;      // ... and whose lines pass within this distance of each other.
+  double min_length_fraction = 0.1;  // Scene prior (eq. 2): shortest junction, fraction of the height H (paper: 0.25).
+  double max_length_fraction = 0.5;  // Scene prior (eq. 2): longest junction, fraction of the diagonal (paper 1/2); 0 = no limit.
+  double min_inclination_deg = 3;    // Scene prior: flattest junction, degrees from horizontal.
+  double max_inclination_deg = 80;   // Scene prior: steepest junction, degrees from horizontal (the paper: 90 - atan(H/W), set -1).
+  double support_distance_px = 2.0;  // Edge pixels this close to a chosen line support its refit.
+
+  bool Check(std::string* why) const;
+};
+
+// Finds the left and right floor/wall junctions. InvalidArgument for an empty or non-8-bit
+// image; otherwise OK, with result->status = kNoCorridorFound and a reason when no plausible
+// pair exists (tiny, blank or noise images, scenes that are not corridors).
+Status DetectJunctions(const cv::Mat& bgr, const JunctionDetectorOptions& options,
+                       JunctionPair* result);
+
+}  // namespace corridor

@@ -1,0 +1,130 @@
+#include "perception/line_segments.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
+#include <opencv2/imgproc.hpp>
+
+namespace corridor {
+namespace {
+
+// Orients the line so that its normal points down (b > 0, or a > 0 for vertical lines).
+Eigen::Vector3d Normalise(Eigen::Vector3d line) {
+  line /= line.head<2>().norm();
+  if (line.y() < 0 || (line.y() == 0 && line.x() < 0)) line = -line;
+  return line;
+}
+
+// Fills extent, slope and inclination of `m` from the points projected onto its line.
+void SetExtent(const std::vector<Eigen::Vector2d>& points, MergedLine* m) {
+  const Eigen::Vector2d direction(m->line.y(), -m->line.x());  // Along the line, u increasing.
+  const Eigen::Vector2d origin = -m->line.z() * m->line.head<2>();
+  double lo = 1e300, hi = -1e300;
+  for (const auto& p : points) {
+    const double t = (p - origin).dot(direction);
+    lo = std::min(lo, t);
+    hi = std::max(hi, t);
+  }
+  m->start = origin + lo * direction;
+  m->end = origin + hi * direction;
+  m->length = hi - lo;
+  const double du = direction.x(), dv = direction.y();
+  m->slope = std::abs(du) > 1e-12 ? dv / du : (dv > 0 ? 1e12 : -1e12);
+  m->inclination_deg = std::atan2(std::abs(dv), std::abs(du)) * 180.0 / M_PI;
+}
+
+}  // namespace
+
+EdgeSegments DetectSegments(const cv::Mat& gray, int roi_top, const SegmentOptions& options) {
+  EdgeSegments out;
+  out.roi_top = roi_top;
+  const cv::Mat roi = gray.rowRange(roi_top, gray.rows);
+  cv::Mat smooth;
+  if (options.blur_sigma > 0) {
+    cv::GaussianBlur(roi, smooth, cv::Size(0, 0), options.blur_sigma);
+  } else {
+    smooth = roi;
+  }
+  cv::Canny(smooth, out.edges, options.canny_low, options.canny_high, 3, true);
+  std::vector<cv::Vec4i> lines;
+  cv::HoughLinesP(out.edges, lines, 1.0, CV_PI / 180.0, options.hough_threshold,
+                  options.hough_min_length, options.hough_max_gap);
+  out.segments.reserve(lines.size());
+  for (const auto& l : lines) {
+    out.segments.emplace_back(static_cast<float>(l[0]), static_cast<float>(l[1] + roi_top),
+                              static_cast<float>(l[2]), static_cast<float>(l[3] + roi_top));
+  }
+  return out;
+}
+
+MergedLine LineThrough(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  MergedLine m;
+  m.line = Normalise(Eigen::Vector3d(a.x(), a.y(), 1).cross(Eigen::Vector3d(b.x(), b.y(), 1)));
+  SetExtent({a, b}, &m);
+  m.covered = m.length;
+  return m;
+}
+
+std::vector<MergedLine> MergeSegments(const std::vector<cv::Vec4f>& segments, double angle_deg,
+                                      double distance_px) {
+  // Longest first, so that each group is seeded by its most reliable segment.
+  std::vector<int> order(segments.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
+  const auto length = [&](int i) {
+    const auto& s = segments[i];
+    return std::hypot(s[2] - s[0], s[3] - s[1]);
+  };
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return length(a) > length(b); });
+  const double cos_tol = std::cos(angle_deg * M_PI / 180.0);
+  std::vector<MergedLine> merged;
+  std::vector<std::vector<Eigen::Vector2d>> members;
+  std::vector<std::vector<double>> weights;
+  for (int i : order) {
+    const auto& s = segments[i];
+    const Eigen::Vector2d a(s[0], s[1]), b(s[2], s[3]);
+    if ((b - a).norm() < 1e-6) continue;
+    const MergedLine candidate = LineThrough(a, b);
+    int group = -1;
+    for (size_t g = 0; g < merged.size() && group < 0; ++g) {
+      const Eigen::Vector3d& l = merged[g].line;
+      if (std::abs(l.head<2>().dot(candidate.line.head<2>())) < cos_tol) continue;
+      const double da = std::abs(l.dot(a.homogeneous())), db = std::abs(l.dot(b.homogeneous()));
+      if (da <= distance_px && db <= distance_px) group = static_cast<int>(g);
+    }
+    if (group < 0) {
+      merged.push_back(candidate);
+      members.push_back({a, b});
+      weights.push_back({candidate.length, candidate.length});
+      continue;
+    }
+    members[group].push_back(a);
+    members[group].push_back(b);
+    weights[group].push_back(candidate.length);
+    weights[group].push_back(candidate.length);
+    // Length-weighted total least squares through the group's endpoints.
+    Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+    double total = 0;
+    for (size_t k = 0; k < members[group].size(); ++k) {
+      mean += weights[group][k] * members[group][k];
+      total += weights[group][k];
+    }
+    mean /= total;
+    Eigen::Matrix2d scatter = Eigen::Matrix2d::Zero();
+    for (size_t k = 0; k < members[group].size(); ++k) {
+      const Eigen::Vector2d d = members[group][k] - mean;
+      scatter += weights[group][k] * d * d.transpose();
+    }
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(scatter);
+    const Eigen::Vector2d normal = eig.eigenvectors().col(0);
+    MergedLine& m = merged[group];
+    m.line = Normalise(Eigen::Vector3d(normal.x(), normal.y(), -normal.dot(mean)));
+    const double covered = m.covered + candidate.length;
+    SetExtent(members[group], &m);
+    m.covered = std::min(covered, m.length);
+  }
+  return merged;
+}
+
+}  // namespace corridor

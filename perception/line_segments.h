@@ -1,0 +1,49 @@
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Core>
+#include <opencv2/core.hpp>
+
+namespace corridor {
+
+// A straight line found in the image: several collinear Hough segments merged (the paper's NMS)
+// into one, in full-image pixel coordinates.
+struct MergedLine {
+  Eigen::Vector3d line;       // a u + b v + c = 0, a^2 + b^2 = 1, with b >= 0 (normal points down).
+  Eigen::Vector2d start;      // Extent of its segments along the line: the end with smaller u.
+  Eigen::Vector2d end;        // The end with larger u.
+  double length = 0;          // Extent, px.
+  double covered = 0;         // Summed length of its segments, px (<= length when broken).
+  double slope = 0;           // dv/du (< 0 rises to the right: a left junction).
+  double inclination_deg = 0; // Angle from the horizontal, in [0, 90].
+};
+
+// Canny edges (in the ROI rows [roi_top, rows)) and their Hough segments in full-image coordinates.
+struct EdgeSegments {
+  cv::Mat edges;                   // CV_8U edge map of the ROI (255 = edge).
+  int roi_top = 0;                 // First image row of the ROI.
+  std::vector<cv::Vec4f> segments; // (u0, v0, u1, v1) in full-image coordinates.
+};
+
+struct SegmentOptions {
+  double blur_sigma;         // Gaussian blur before Canny, px.
+  double canny_low;          // Canny thresholds.
+  double canny_high;
+  int hough_threshold;       // Hough votes.
+  double hough_min_length;   // Shortest segment, px.
+  double hough_max_gap;      // Largest gap, px.
+};
+
+// Canny + probabilistic Hough on the rows [roi_top, rows) of a grey image.
+EdgeSegments DetectSegments(const cv::Mat& gray, int roi_top, const SegmentOptions& options);
+
+// Groups segments whose lines agree within the tolerances and fits one line per group
+// (length-weighted total least squares of their endpoints).
+std::vector<MergedLine> MergeSegments(const std::vector<cv::Vec4f>& segments, double angle_deg,
+                                      double distance_px);
+
+// A MergedLine through two points (normalised, normal pointing down, extent from the points).
+MergedLine LineThrough(const Eigen::Vector2d& a, const Eigen::Vector2d& b);
+
+}  // namespace corridor

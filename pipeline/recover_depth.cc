@@ -1,0 +1,192 @@
+#include "pipeline/recover_depth.h"
+
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+#include <opencv2/imgproc.hpp>
+
+#include "estimation/corridor_observation.h"
+
+namespace corridor {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double SecondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// 8-bit BGR view of the input, or an error naming what is wrong with it.
+Status ToBgr(const cv::Mat& image, const Camera& camera, cv::Mat* bgr) {
+  if (image.empty()) return Status::InvalidArgument("image is empty");
+  if (image.cols != camera.image_width || image.rows != camera.image_height) {
+    std::ostringstream msg;
+    msg << "image is " << image.cols << "x" << image.rows << " but the calibration is for "
+        << camera.image_width << "x" << camera.image_height;
+    return Status::InvalidArgument(msg.str());
+  }
+  if (image.depth() != CV_8U) return Status::InvalidArgument("image must be 8-bit");
+  if (image.channels() == 3) {
+    *bgr = image;
+  } else if (image.channels() == 1) {
+    cv::cvtColor(image, *bgr, cv::COLOR_GRAY2BGR);
+  } else if (image.channels() == 4) {
+    cv::cvtColor(image, *bgr, cv::COLOR_BGRA2BGR);
+  } else {
+    return Status::InvalidArgument("image must have 1, 3 or 4 channels");
+  }
+  return Status::Ok();
+}
+
+// Points along a junction line, in ideal (undistorted) pixels.
+std::vector<Eigen::Vector2d> IdealSamples(const JunctionLine& line, int n, const Camera& camera) {
+  std::vector<Eigen::Vector2d> points = SampleAlongLine(line, n);
+  for (auto& p : points) p = camera.Undistort(p);
+  return points;
+}
+
+}  // namespace
+
+CorridorObservation ObservationFromJunctions(const JunctionPair& junctions, const Camera& camera,
+                                             int points_per_line) {
+  CorridorObservation observation = CorridorObservation::FromCamera(camera);
+  observation.left = IdealSamples(junctions.left, points_per_line, camera);
+  observation.right = IdealSamples(junctions.right, points_per_line, camera);
+  return observation;
+}
+
+bool RecoverDepthOptions::Check(std::string* why) const {
+  std::string reason;
+  if (points_per_line < 3 || points_per_line > 10000) {
+    reason = "points_per_line must be in [3, 10000]";
+  } else if (!(min_width > 0 && min_width < max_width && std::isfinite(max_width))) {
+    reason = "width bounds must satisfy 0 < min_width < max_width";
+  } else if (!(max_abs_yaw > 0 && max_abs_yaw < M_PI / 2)) {
+    reason = "max_abs_yaw must be in (0, pi/2)";
+  } else if (!(max_abs_pitch > 0 && max_abs_pitch < M_PI / 2)) {
+    reason = "max_abs_pitch must be in (0, pi/2)";
+  } else if (!(ceiling_height >= 0 && std::isfinite(ceiling_height))) {
+    reason = "ceiling_height must be >= 0 (0 = unknown)";
+  } else if (!perception.Check(&reason)) {
+    reason = "perception: " + reason;
+  }
+  if (reason.empty()) return true;
+  if (why != nullptr) *why = reason;
+  return false;
+}
+
+Status CheckPlausible(const CorridorGeometry& g, const RecoverDepthOptions& options) {
+  std::ostringstream msg;
+  if (!std::isfinite(g.yaw) || !std::isfinite(g.pitch) || !std::isfinite(g.offset) ||
+      !std::isfinite(g.width)) {
+    msg << "non-finite estimate";
+  } else if (g.width < options.min_width || g.width > options.max_width) {
+    msg << "width " << g.width << " m is outside [" << options.min_width << ", "
+        << options.max_width << "] m";
+  } else if (std::abs(g.yaw) > options.max_abs_yaw) {
+    msg << "yaw " << g.yaw << " rad is beyond +-" << options.max_abs_yaw << " rad";
+  } else if (std::abs(g.pitch) > options.max_abs_pitch) {
+    msg << "pitch " << g.pitch << " rad is beyond +-" << options.max_abs_pitch << " rad";
+  } else if (g.LeftDistance() <= 0 || g.RightDistance() <= 0) {
+    msg << "the camera is not between the walls (offset " << g.offset << " m, width " << g.width
+        << " m)";
+  } else {
+    return Status::Ok();
+  }
+  return Status::ImplausibleGeometry(msg.str());
+}
+
+DepthRecoverer::DepthRecoverer(const RecoverDepthOptions& options,
+                               std::unique_ptr<CorridorSolver> solver,
+                               std::unique_ptr<DepthRasterizer> rasterizer)
+    : options_(options), solver_(std::move(solver)), rasterizer_(std::move(rasterizer)) {}
+
+Status DepthRecoverer::Create(const RecoverDepthOptions& options,
+                              std::unique_ptr<DepthRecoverer>* recoverer) {
+  std::string why;
+  if (!options.Check(&why)) return Status::InvalidArgument(why);
+  std::unique_ptr<CorridorSolver> solver;
+  Status status = CreateSolver(options.solver, options.solver_options, &solver);
+  if (!status.ok()) return status;
+  std::unique_ptr<DepthRasterizer> rasterizer;
+  status = CreateRasterizer(options.rasterizer, options.rasterizer_options, &rasterizer);
+  if (!status.ok()) return status;
+  recoverer->reset(new DepthRecoverer(options, std::move(solver), std::move(rasterizer)));
+  return Status::Ok();
+}
+
+Status DepthRecoverer::Recover(const cv::Mat& image, const Camera& camera,
+                               RecoverDepthResult* result) const {
+  const auto start = Clock::now();
+  if (Detect(image, camera, result).ok()) Reconstruct(camera, result);
+  result->times.total = SecondsSince(start);
+  return result->status;
+}
+
+Status DepthRecoverer::Detect(const cv::Mat& image, const Camera& camera,
+                              RecoverDepthResult* result) const {
+  const auto start = Clock::now();
+  *result = RecoverDepthResult();
+  const auto finish = [&](Status status) {
+    result->status = status;
+    result->times.perception = SecondsSince(start);
+    result->times.total = result->times.perception;
+    return status;
+  };
+  std::string why;
+  if (!camera.Check(&why)) return finish(Status::InvalidArgument("camera: " + why));
+  cv::Mat bgr;
+  Status status = ToBgr(image, camera, &bgr);
+  if (!status.ok()) return finish(status);
+  status = DetectJunctions(bgr, options_.perception, &result->junctions);
+  if (!status.ok()) return finish(status);
+  return finish(result->junctions.status);
+}
+
+Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* result) const {
+  const auto start = Clock::now();
+  const auto finish = [&](Status status) {
+    result->status = status;
+    result->times.total = result->times.perception + SecondsSince(start);
+    return status;
+  };
+  if (!result->junctions.status.ok()) return finish(result->junctions.status);
+  auto stage = Clock::now();
+  const CorridorObservation observation =
+      ObservationFromJunctions(result->junctions, camera, options_.points_per_line);
+  Status status = solver_->Solve(observation, nullptr, &result->solver_summary);
+  result->times.solve = SecondsSince(stage);
+  if (!status.ok()) {
+    if (status.code() == StatusCode::kInvalidArgument) {
+      status = Status::NoCorridorFound("junction lines unusable: " + status.message());
+    }
+    return finish(status);
+  }
+  CorridorGeometry geometry = result->solver_summary.estimate;
+  geometry.camera_height = camera.mount_height;
+  geometry.ceiling_height = options_.ceiling_height;
+  status = CheckPlausible(geometry, options_);
+  if (!status.ok()) return finish(status);
+  result->geometry = geometry;
+  result->has_geometry = true;
+
+  stage = Clock::now();
+  status = rasterizer_->Render(geometry, camera, &result->depth);
+  result->times.rasterize = SecondsSince(stage);
+  return finish(status);
+}
+
+Status RecoverDepth(const cv::Mat& image, const Camera& camera, const RecoverDepthOptions& options,
+                    RecoverDepthResult* result) {
+  std::unique_ptr<DepthRecoverer> recoverer;
+  const Status status = DepthRecoverer::Create(options, &recoverer);
+  if (!status.ok()) {
+    *result = RecoverDepthResult();
+    result->status = status;
+    return status;
+  }
+  return recoverer->Recover(image, camera, result);
+}
+
+}  // namespace corridor

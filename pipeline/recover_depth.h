@@ -1,0 +1,96 @@
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include <opencv2/core.hpp>
+
+#include "core/camera.h"
+#include "core/corridor_geometry.h"
+#include "core/status.h"
+#include "depth/rasterizer.h"
+#include "estimation/corridor_observation.h"
+#include "estimation/solver.h"
+#include "perception/junction_detector.h"
+#include "perception/junction_lines.h"
+
+namespace corridor {
+
+// Everything RecoverDepth can be told. The defaults just work on a calibrated corridor image.
+struct RecoverDepthOptions {
+  std::string solver = "closed_form+lm";   // Solver name or chain (grid, closed_form, lm, ...).
+  std::string rasterizer = "exact";        // Rasteriser name: exact or paper.
+  JunctionDetectorOptions perception;      // Junction-line detection (paper III-A).
+  SolverOptions solver_options;            // Options of every solver.
+  RasterizerOptions rasterizer_options;    // Options of every rasteriser.
+  int points_per_line = 30;                // N: points sampled along each junction (paper III-B).
+  double min_width = 0.5;                  // Narrower estimates are implausible, m.
+  double max_width = 20.0;                 // Wider estimates are implausible, m.
+  double max_abs_yaw = 1.2;                // |yaw| above this is implausible, rad (~69 deg).
+  double max_abs_pitch = 0.8;              // |pitch| above this is implausible, rad (~46 deg).
+  double ceiling_height = 0.0;             // Known ceiling height above the floor, m (0 = none).
+
+  bool Check(std::string* why) const;
+};
+
+// Wall time of each stage, seconds.
+struct StageTimes {
+  double perception = 0;  // Junction-line detection.
+  double solve = 0;       // Geometry estimation.
+  double rasterize = 0;   // Dense depth.
+  double total = 0;       // The whole call.
+};
+
+struct RecoverDepthResult {
+  Status status;                  // ok, or why this frame has no depth.
+  bool has_geometry = false;      // True once a plausible geometry was estimated.
+  CorridorGeometry geometry;      // The estimate (valid when has_geometry).
+  JunctionPair junctions;         // Both junction lines (raw pixels), as detected.
+  SolverSummary solver_summary;   // What the solver reported.
+  cv::Mat depth;                  // CV_32F metres, camera-frame z, 0 = no estimate.
+  StageTimes times;               // Per-stage wall time.
+};
+
+// Recovers depth frame after frame with one solver and one rasteriser, created once.
+// Thread-safe: Recover may be called concurrently.
+class DepthRecoverer {
+ public:
+  // Checks the options and creates the solver and rasteriser; InvalidArgument on a bad option
+  // or an unknown name (with the valid names).
+  static Status Create(const RecoverDepthOptions& options,
+                       std::unique_ptr<DepthRecoverer>* recoverer);
+
+  // One frame. The camera must hold a positive mount height. Returns result->status.
+  // Equivalent to Detect followed, when it succeeds, by Reconstruct.
+  Status Recover(const cv::Mat& image, const Camera& camera, RecoverDepthResult* result) const;
+
+  // The two halves of Recover, for the paper's two-thread pipeline: Detect checks the inputs and
+  // finds the junction lines (the edge-extraction thread); Reconstruct estimates the geometry
+  // and rasterises the depth (the depth-recovery thread). Both return result->status.
+  Status Detect(const cv::Mat& image, const Camera& camera, RecoverDepthResult* result) const;
+  Status Reconstruct(const Camera& camera, RecoverDepthResult* result) const;
+
+  const RecoverDepthOptions& options() const { return options_; }
+
+ private:
+  DepthRecoverer(const RecoverDepthOptions& options, std::unique_ptr<CorridorSolver> solver,
+                 std::unique_ptr<DepthRasterizer> rasterizer);
+
+  const RecoverDepthOptions options_;
+  const std::unique_ptr<CorridorSolver> solver_;
+  const std::unique_ptr<DepthRasterizer> rasterizer_;
+};
+
+// One-shot convenience: image + camera -> depth. Returns result->status.
+Status RecoverDepth(const cv::Mat& image, const Camera& camera, const RecoverDepthOptions& options,
+                    RecoverDepthResult* result);
+
+// The solvers' input from detected junctions: n points along each line, undistorted to ideal
+// pixels, with the camera's intrinsics and height.
+CorridorObservation ObservationFromJunctions(const JunctionPair& junctions, const Camera& camera,
+                                             int points_per_line);
+
+// Is the estimate a corridor? kImplausibleGeometry with the reason otherwise.
+Status CheckPlausible(const CorridorGeometry& geometry, const RecoverDepthOptions& options);
+
+}  // namespace corridor

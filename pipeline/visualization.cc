@@ -1,0 +1,117 @@
+#include "pipeline/visualization.h"
+
+#include <cstdio>
+
+#include <opencv2/imgproc.hpp>
+
+namespace corridor {
+namespace {
+
+const cv::Scalar kLeftColor(60, 220, 60);     // BGR green
+const cv::Scalar kRightColor(220, 60, 220);   // BGR magenta
+const cv::Scalar kSegmentColor(160, 160, 160);
+
+cv::Point ToPoint(const Eigen::Vector2d& p) {
+  return {cvRound(p.x()), cvRound(p.y())};
+}
+
+void DrawLine(cv::Mat* canvas, const JunctionLine& line, const Eigen::Vector2d& vp, bool has_vp,
+              const cv::Scalar& color) {
+  for (const auto& p : line.support) cv::circle(*canvas, ToPoint(p), 1, color * 0.6, cv::FILLED);
+  const Eigen::Vector2d far = has_vp ? vp : line.far_end;
+  cv::line(*canvas, ToPoint(line.near_end), ToPoint(far), color, 2, cv::LINE_AA);
+}
+
+void PutCaption(cv::Mat* image, const std::string& text, int row) {
+  const cv::Point origin(6, 16 + 16 * row);
+  cv::putText(*image, text, origin, cv::FONT_HERSHEY_SIMPLEX, 0.42, cv::Scalar(0, 0, 0), 3,
+              cv::LINE_AA);
+  cv::putText(*image, text, origin, cv::FONT_HERSHEY_SIMPLEX, 0.42, cv::Scalar(255, 255, 255), 1,
+              cv::LINE_AA);
+}
+
+}  // namespace
+
+cv::Mat ColorizeDepth(const cv::Mat& depth, double max_depth) {
+  cv::Mat scaled;
+  depth.convertTo(scaled, CV_8U, 255.0 / max_depth);
+  cv::Mat color;
+  cv::applyColorMap(scaled, color, cv::COLORMAP_TURBO);
+  color.setTo(cv::Scalar(0, 0, 0), depth <= 0);
+  return color;
+}
+
+cv::Mat DepthColorBar(int height, double max_depth) {
+  const int bar_width = 16, label_width = 44;
+  cv::Mat ramp(height, 1, CV_32F);
+  for (int v = 0; v < height; ++v) {
+    ramp.at<float>(v, 0) = static_cast<float>(max_depth * (height - 1 - v) / (height - 1.0));
+  }
+  cv::Mat bar = cv::Mat::zeros(height, bar_width + label_width, CV_8UC3);
+  cv::Mat colors = ColorizeDepth(ramp, max_depth);
+  cv::resize(colors, bar(cv::Rect(0, 0, bar_width, height)), cv::Size(bar_width, height), 0, 0,
+             cv::INTER_NEAREST);
+  for (int i = 0; i <= 4; ++i) {
+    const double value = max_depth * i / 4.0;
+    const int v = cvRound((height - 1) * (1.0 - i / 4.0));
+    char label[32];
+    std::snprintf(label, sizeof(label), "%.0fm", value);
+    cv::putText(bar, label, cv::Point(bar_width + 3, std::clamp(v + 4, 10, height - 2)),
+                cv::FONT_HERSHEY_SIMPLEX, 0.38, cv::Scalar(255, 255, 255), 1, cv::LINE_AA);
+  }
+  return bar;
+}
+
+cv::Mat DrawJunctions(const cv::Mat& bgr, const JunctionPair& junctions) {
+  cv::Mat canvas = bgr.clone();
+  for (const auto& s : junctions.segments) {
+    cv::line(canvas, cv::Point(cvRound(s[0]), cvRound(s[1])), cv::Point(cvRound(s[2]), cvRound(s[3])),
+             kSegmentColor, 1, cv::LINE_AA);
+  }
+  if (!junctions.status.ok()) return canvas;
+  DrawLine(&canvas, junctions.left, junctions.vanishing_point, true, kLeftColor);
+  DrawLine(&canvas, junctions.right, junctions.vanishing_point, true, kRightColor);
+  cv::drawMarker(canvas, ToPoint(junctions.vanishing_point), cv::Scalar(0, 255, 255),
+                 cv::MARKER_CROSS, 12, 2);
+  return canvas;
+}
+
+cv::Mat HorizontalConcat(const std::vector<cv::Mat>& images, int gap) {
+  int height = 0;
+  for (const auto& image : images) height = std::max(height, image.rows);
+  std::vector<cv::Mat> parts;
+  for (size_t i = 0; i < images.size(); ++i) {
+    cv::Mat part = images[i];
+    if (part.channels() == 1) cv::cvtColor(part, part, cv::COLOR_GRAY2BGR);
+    if (part.rows != height) {
+      cv::Mat padded = cv::Mat::zeros(height, part.cols, CV_8UC3);
+      part.copyTo(padded(cv::Rect(0, 0, part.cols, part.rows)));
+      part = padded;
+    }
+    parts.push_back(part);
+    if (i + 1 < images.size() && gap > 0) parts.push_back(cv::Mat::zeros(height, gap, CV_8UC3));
+  }
+  cv::Mat out;
+  cv::hconcat(parts, out);
+  return out;
+}
+
+cv::Mat MakeResultPanel(const cv::Mat& bgr, const RecoverDepthResult& result, double max_depth) {
+  cv::Mat lines = DrawJunctions(bgr, result.junctions);
+  cv::Mat depth_color = result.depth.empty() ? cv::Mat::zeros(bgr.size(), CV_8UC3)
+                                             : ColorizeDepth(result.depth, max_depth);
+  char text[160];
+  if (result.status.ok()) {
+    std::snprintf(text, sizeof(text), "w=%.2fm off=%.2fm yaw=%.1fdeg pitch=%.1fdeg",
+                  result.geometry.width, result.geometry.offset, result.geometry.yaw * 180 / M_PI,
+                  result.geometry.pitch * 180 / M_PI);
+    PutCaption(&lines, text, 0);
+    std::snprintf(text, sizeof(text), "%.2f ms", result.times.total * 1e3);
+    PutCaption(&depth_color, text, 0);
+  } else {
+    PutCaption(&lines, result.status.ToString().substr(0, 70), 0);
+  }
+  return HorizontalConcat({lines, depth_color, DepthColorBar(bgr.rows, max_depth)});
+}
+
+}  // namespace corridor

@@ -1,0 +1,113 @@
+#include "tools/input_source.h"
+
+#include <filesystem>
+#include <system_error>
+
+#include "io/camera_yaml.h"
+
+namespace corridor {
+namespace {
+
+namespace fs = std::filesystem;
+
+bool Exists(const fs::path& p) {
+  std::error_code ec;
+  return fs::exists(p, ec);
+}
+
+// The folder's own name, also for "." and trailing slashes.
+std::string FolderName(const fs::path& dir) {
+  std::error_code ec;
+  fs::path p = fs::weakly_canonical(dir, ec);
+  if (ec) p = dir.lexically_normal();
+  if (!p.has_filename()) p = p.parent_path();
+  return p.filename().string();
+}
+
+// Applies the overrides and checks the camera; `found` is the YAML that applies ("" if none).
+Status FinishCamera(const CameraOverrides& overrides, const std::string& found,
+                    const std::string& scene_path, InputScene* scene) {
+  const std::string path = overrides.camera_file.empty() ? found : overrides.camera_file;
+  if (path.empty()) {
+    return Status::InvalidArgument("no camera calibration for " + scene_path +
+                                   ": pass --camera=FILE or put a camera.yaml beside the images");
+  }
+  if (!overrides.camera_file.empty() || scene->camera_source != path) {
+    const Status status = ReadCameraYaml(path, &scene->camera);
+    if (!status.ok()) return status;
+  }
+  scene->camera_source = path;
+  if (overrides.camera_height > 0) scene->camera.mount_height = overrides.camera_height;
+  if (scene->camera.mount_height <= 0) {
+    return Status::InvalidArgument("camera height unknown for " + scene_path +
+                                   ": pass --camera_height=M or add camera_height to " + path);
+  }
+  std::string why;
+  if (!scene->camera.Check(&why)) return Status::InvalidArgument(path + ": " + why);
+  return Status::Ok();
+}
+
+// camera.yaml beside the images, then one folder up; "" when neither exists.
+std::string NearbyCamera(const fs::path& folder) {
+  for (const fs::path& candidate : {folder / "camera.yaml", folder.parent_path() / "camera.yaml"}) {
+    if (Exists(candidate)) return candidate.string();
+  }
+  return "";
+}
+
+DatasetFrame FrameFromImage(const fs::path& image) {
+  DatasetFrame frame;
+  frame.name = image.stem().string();
+  frame.rgb_path = image.string();
+  return frame;
+}
+
+}  // namespace
+
+Status ResolveInput(const std::string& input, const CameraOverrides& overrides,
+                    std::vector<InputScene>* scenes) {
+  scenes->clear();
+  if (input.empty()) return Status::InvalidArgument("--input is required");
+  const fs::path path(input);
+  if (!Exists(path)) return Status::NotFound(input + ": no such file or folder");
+  std::error_code ec;
+  if (!fs::is_directory(path, ec)) {
+    // A single image: the scene is its folder (or the scene above an rgb/ folder).
+    fs::path folder = path.parent_path().empty() ? fs::path(".") : path.parent_path();
+    InputScene scene;
+    scene.name = FolderName(folder) == "rgb" ? FolderName(folder.parent_path()) : FolderName(folder);
+    scene.frames.push_back(FrameFromImage(path));
+    const Status status = FinishCamera(overrides, NearbyCamera(folder), input, &scene);
+    if (!status.ok()) return status;
+    scenes->push_back(std::move(scene));
+    return Status::Ok();
+  }
+  if (IsDatasetRoot(input)) {
+    std::vector<DatasetScene> dataset;
+    Status status = LoadDataset(input, &dataset);
+    if (!status.ok()) return status;
+    for (auto& d : dataset) {
+      InputScene scene;
+      scene.name = d.name;
+      scene.camera = d.camera;
+      scene.camera_source = d.camera_path;
+      scene.frames = std::move(d.frames);
+      status = FinishCamera(overrides, d.camera_path, d.dir, &scene);
+      if (!status.ok()) return status;
+      scenes->push_back(std::move(scene));
+    }
+    return Status::Ok();
+  }
+  std::vector<std::string> images;
+  Status status = ListImages(input, &images);
+  if (!status.ok()) return status;
+  InputScene scene;
+  scene.name = FolderName(path);
+  for (const auto& image : images) scene.frames.push_back(FrameFromImage(image));
+  status = FinishCamera(overrides, NearbyCamera(path), input, &scene);
+  if (!status.ok()) return status;
+  scenes->push_back(std::move(scene));
+  return Status::Ok();
+}
+
+}  // namespace corridor

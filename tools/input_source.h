@@ -1,0 +1,34 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/camera.h"
+#include "core/status.h"
+#include "io/dataset.h"
+
+namespace corridor {
+
+// How the tools find the camera when the input does not carry its own.
+struct CameraOverrides {
+  std::string camera_file;     // --camera: used for every scene when set.
+  double camera_height = 0.0;  // --camera_height: metres, used when > 0.
+};
+
+// One scene of an --input: a dataset scene, a plain folder of images, or a single image.
+struct InputScene {
+  std::string name;                  // Output folder name: the scene's or the folder's name.
+  std::string camera_source;         // The file the camera came from.
+  Camera camera;                     // Checked, with a positive mount height.
+  std::vector<DatasetFrame> frames;  // Sorted by name; depth/truth/floor paths when available.
+};
+
+// Resolves --input (an image file, a folder of images, or a dataset root in the foundation
+// layout) into scenes with their cameras: --camera if given, else <scene>/camera.yaml, else
+// <dataset>/camera.yaml (for a single image or a plain folder: camera.yaml beside the images,
+// then in the parent folder). The height is --camera_height if given, else the camera_height key.
+// Every failure is an InvalidArgument or NotFound that names the path.
+Status ResolveInput(const std::string& input, const CameraOverrides& overrides,
+                    std::vector<InputScene>* scenes);
+
+}  // namespace corridor

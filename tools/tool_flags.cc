@@ -1,0 +1,37 @@
+#include "tools/tool_flags.h"
+
+DEFINE_string(camera, "", "Camera calibration YAML (ROS camera_info + camera_height); overrides "
+                          "<scene>/camera.yaml and <dataset>/camera.yaml");
+DEFINE_double(camera_height, 0.0, "Camera height above the floor, m; overrides the YAML key");
+DEFINE_string(solver, "closed_form+lm",
+              "Solver: grid, closed_form, lm, or a chain such as closed_form+lm");
+DEFINE_string(rasterizer, "exact", "Depth rasteriser: exact or paper");
+DEFINE_double(max_range, 40.0, "Depth beyond this gets no estimate, m");
+DEFINE_double(max_height, 2.5, "Without a ceiling, wall points higher than this get no estimate, m");
+DEFINE_double(ceiling_height, 0.0, "Known ceiling height above the floor, m (0 = unknown)");
+DEFINE_int32(points_per_line, 30, "Points sampled along each junction line for the solver");
+DEFINE_double(roi_top, 0.5, "Junction search region starts at this fraction of the image height");
+
+namespace corridor {
+
+Status RecoverDepthOptionsFromFlags(RecoverDepthOptions* options) {
+  *options = RecoverDepthOptions();
+  options->solver = FLAGS_solver;
+  options->rasterizer = FLAGS_rasterizer;
+  options->rasterizer_options.max_range = FLAGS_max_range;
+  options->rasterizer_options.max_height = FLAGS_max_height;
+  options->ceiling_height = FLAGS_ceiling_height;
+  options->points_per_line = FLAGS_points_per_line;
+  options->perception.roi_top_fraction = FLAGS_roi_top;
+  std::unique_ptr<DepthRecoverer> probe;
+  return DepthRecoverer::Create(*options, &probe);
+}
+
+CameraOverrides CameraOverridesFromFlags() {
+  CameraOverrides overrides;
+  overrides.camera_file = FLAGS_camera;
+  overrides.camera_height = FLAGS_camera_height;
+  return overrides;
+}
+
+}  // namespace corridor

@@ -1,0 +1,26 @@
+#pragma once
+
+#include <gflags/gflags.h>
+
+#include "core/status.h"
+#include "pipeline/recover_depth.h"
+#include "tools/input_source.h"
+
+// The flags every tool that recovers depth takes (corridor_depth, corridor_eval, ...).
+DECLARE_string(camera);
+DECLARE_double(camera_height);
+DECLARE_string(solver);
+DECLARE_string(rasterizer);
+DECLARE_double(max_range);
+DECLARE_double(max_height);
+DECLARE_double(ceiling_height);
+DECLARE_int32(points_per_line);
+DECLARE_double(roi_top);
+
+namespace corridor {
+
+// RecoverDepthOptions from the flags, checked; InvalidArgument names the bad flag.
+Status RecoverDepthOptionsFromFlags(RecoverDepthOptions* options);
+CameraOverrides CameraOverridesFromFlags();
+
+}  // namespace corridor
