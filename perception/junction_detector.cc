@@ -119,6 +119,8 @@ bool JunctionDetectorOptions::Check(std::string* why) const {
     reason = "inclination bounds must lie in [0, 90] degrees";
   } else if (!(support_distance_px > 0)) {
     reason = "support_distance_px must be positive";
+  } else if (!(max_edge_density > 0 && max_edge_density <= 1)) {
+    reason = "max_edge_density must be in (0, 1]";
   }
   if (reason.empty()) return true;
   if (why != nullptr) *why = reason;
@@ -166,6 +168,14 @@ Status DetectJunctions(const cv::Mat& bgr, const JunctionDetectorOptions& option
       options.blur_sigma, options.canny_low, options.canny_high, options.hough_threshold,
       std::max(8.0, options.hough_min_length_fraction * height), options.hough_max_gap};
   EdgeSegments found = DetectSegments(gray, roi_top, segment_options);
+  const double edge_density =
+      cv::countNonZero(found.edges) / static_cast<double>(std::max<size_t>(1, found.edges.total()));
+  if (edge_density > options.max_edge_density) {
+    std::ostringstream msg;
+    msg << "image is noise or texture: " << static_cast<int>(100 * edge_density)
+        << "% of the search region are edges";
+    return NoCorridor(result, msg.str());
+  }
   result->segments = found.segments;
   const std::vector<MergedLine> lines =
       MergeSegments(found.segments, options.merge_angle_deg, options.merge_distance_px);

@@ -26,6 +26,7 @@ struct JunctionDetectorOptions {
   double min_inclination_deg = 3;    // Scene prior: flattest junction, degrees from horizontal.
   double max_inclination_deg = 80;   // Scene prior: steepest junction, degrees from horizontal (the paper: 90 - atan(H/W), set -1).
   double support_distance_px = 2.0;  // Edge pixels this close to a chosen line support its refit.
+  double max_edge_density = 0.2;     // More edge pixels than this fraction of the ROI: noise or texture, not a corridor.
 
   bool Check(std::string* why) const;
 };
