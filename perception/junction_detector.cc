@@ -102,8 +102,10 @@ bool JunctionDetectorOptions::Check(std::string* why) const {
     reason = "roi_top_fraction must be in [0, 0.95)";
   } else if (!(blur_sigma >= 0 && blur_sigma <= 10)) {
     reason = "blur_sigma must be in [0, 10]";
-  } else if (!(canny_low > 0 && canny_high >= canny_low)) {
-    reason = "Canny thresholds must satisfy 0 < canny_low <= canny_high";
+  } else if (!(canny_high >= 0 && canny_low_ratio > 0 && canny_low_ratio <= 1)) {
+    reason = "Canny thresholds: canny_high >= 0 (0 = automatic), canny_low_ratio in (0, 1]";
+  } else if (!(canny_auto_percentile > 0 && canny_auto_percentile < 100 && canny_auto_min > 0)) {
+    reason = "automatic Canny: percentile in (0, 100) and a positive minimum";
   } else if (hough_threshold < 1) {
     reason = "hough_threshold must be >= 1";
   } else if (!(hough_min_length_fraction > 0 && hough_min_length_fraction < 1)) {
@@ -160,14 +162,14 @@ Status DetectJunctions(const cv::Mat& bgr, const JunctionDetectorOptions& option
   } else {
     return Status::InvalidArgument("image must have 1, 3 or 4 channels");
   }
-  cv::Mat gray;
-  cv::cvtColor(color, gray, cv::COLOR_BGR2GRAY);
   const int roi_top =
       std::clamp(static_cast<int>(options.roi_top_fraction * height), 0, height - kMinImageSide / 2);
   const SegmentOptions segment_options{
-      options.blur_sigma, options.canny_low, options.canny_high, options.hough_threshold,
+      options.blur_sigma,           options.canny_high,
+      options.canny_low_ratio,      options.canny_auto_percentile,
+      options.canny_auto_min,       options.hough_threshold,
       std::max(8.0, options.hough_min_length_fraction * height), options.hough_max_gap};
-  EdgeSegments found = DetectSegments(gray, roi_top, segment_options);
+  EdgeSegments found = DetectSegments(color, roi_top, segment_options);
   const double edge_density =
       cv::countNonZero(found.edges) / static_cast<double>(std::max<size_t>(1, found.edges.total()));
   if (edge_density > options.max_edge_density) {

@@ -13,9 +13,11 @@ namespace corridor {
 // one, and work on generated and real corridors.
 struct JunctionDetectorOptions {
   double roi_top_fraction = 0.5;     // The search region starts at this fraction of the height (paper: the middle).
-  double blur_sigma = 1.2;           // Gaussian blur before Canny, px (0 = none).
-  double canny_low = 30;             // Canny hysteresis low threshold.
-  double canny_high = 90;            // Canny hysteresis high threshold.
+  double blur_sigma = 0.8;           // Gaussian blur before Canny, px (0 = none).
+  double canny_high = 0;             // Canny high threshold on |dx|+|dy| (Sobel 3x3); 0 = automatic.
+  double canny_low_ratio = 0.4;      // Canny low threshold as a fraction of the high one.
+  double canny_auto_percentile = 90; // Automatic high threshold: this percentile of the ROI's gradients...
+  double canny_auto_min = 40;        // ... but at least this, so that flat images give no edges.
   int hough_threshold = 25;          // Probabilistic Hough accumulator threshold (votes).
   double hough_min_length_fraction = 0.04;  // Shortest Hough segment, as a fraction of the image height.
   double hough_max_gap = 6;          // Largest gap bridged inside one Hough segment, px.

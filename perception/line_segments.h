@@ -23,20 +23,23 @@ struct MergedLine {
 struct EdgeSegments {
   cv::Mat edges;                   // CV_8U edge map of the ROI (255 = edge).
   int roi_top = 0;                 // First image row of the ROI.
+  double canny_high = 0;           // The Canny high threshold used.
   std::vector<cv::Vec4f> segments; // (u0, v0, u1, v1) in full-image coordinates.
 };
 
 struct SegmentOptions {
   double blur_sigma;         // Gaussian blur before Canny, px.
-  double canny_low;          // Canny thresholds.
-  double canny_high;
+  double canny_high;         // Canny high threshold on |dx| + |dy|; 0 = automatic.
+  double canny_low_ratio;    // Low threshold = ratio * high.
+  double auto_percentile;    // Automatic high threshold: this percentile of the gradients...
+  double auto_min;           // ... but at least this.
   int hough_threshold;       // Hough votes.
   double hough_min_length;   // Shortest segment, px.
   double hough_max_gap;      // Largest gap, px.
 };
 
-// Canny + probabilistic Hough on the rows [roi_top, rows) of a grey image.
-EdgeSegments DetectSegments(const cv::Mat& gray, int roi_top, const SegmentOptions& options);
+// Canny (on colour gradients for a BGR image) + probabilistic Hough on the rows [roi_top, rows).
+EdgeSegments DetectSegments(const cv::Mat& image, int roi_top, const SegmentOptions& options);
 
 // Groups segments whose lines agree within the tolerances and fits one line per group
 // (length-weighted total least squares of their endpoints).

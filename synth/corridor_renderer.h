@@ -1,0 +1,33 @@
+#pragma once
+
+#include <opencv2/core.hpp>
+
+#include "core/camera.h"
+#include "core/corridor_geometry.h"
+#include "core/status.h"
+#include "synth/corridor_scene.h"
+#include "synth/scene_options.h"
+
+namespace corridor {
+namespace synth {
+
+// One rendered frame and its ground truth.
+struct Frame {
+  cv::Mat bgr;                // CV_8UC3 image.
+  cv::Mat depth;              // CV_32F camera-frame z of the first surface hit, m (0 = none).
+  CorridorGeometry truth;     // yaw, pitch, offset, width, camera_height, ceiling_height.
+};
+
+// Ray-casts the corridor for a pinhole camera (distortion ignored) at the pose: floor tiles with
+// grout, painted walls with baseboards, recessed doors with frames, ceiling and light panels,
+// boxes, and the end wall; Lambert shading with a light at the camera, falloff with distance,
+// 2x2 supersampling, then blur and sensor noise. Deterministic for given inputs.
+Status RenderFrame(const SceneOptions& options, const Camera& camera, const CameraPose& pose,
+                   Frame* frame);
+
+// The same for a scene built once (BuildScene) and reused across the frames of a sequence.
+Status RenderFrame(const CorridorScene& scene, const Camera& camera, const CameraPose& pose,
+                   Frame* frame);
+
+}  // namespace synth
+}  // namespace corridor

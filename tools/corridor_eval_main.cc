@@ -1,0 +1,199 @@
+// corridor_eval: batch evaluation against ground truth, reproducing the paper's Tables 1-4.
+//   corridor_eval --dataset=DIR --output_dir=OUT [--solver=NAME] [--rasterizer=NAME]
+//                 [--caps=5,40] [--threads=N] [--compare=solverA:rastA,solverB:rastB]
+// Takes every option corridor_depth takes (tools/tool_flags.h). Writes OUT/report.{md,json,csv},
+// OUT/index.html, OUT/plots/*.png, OUT/vis/<scene>/<frame>.png and OUT/depth/<scene>/<frame>.png
+// (16-bit mm). Exit code 0: every frame evaluated; 1: some frames failed (listed in the report);
+// 2: bad usage or configuration, an output that cannot be written, or nothing evaluated.
+
+#include <gflags/gflags.h>
+#include <glog/logging.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <set>
+#include <utility>
+
+#include "io/image_io.h"
+#include "tools/eval/eval_runner.h"
+#include "tools/eval/html_report.h"
+#include "tools/eval/plots.h"
+#include "tools/eval/report_builder.h"
+#include "tools/eval/report_tables.h"
+#include "tools/eval/report_writers.h"
+#include "tools/input_source.h"
+#include "tools/tool_flags.h"
+
+DEFINE_string(dataset, "", "Dataset root (<scene>/rgb, <scene>/depth, truth.yaml), or images");
+DEFINE_string(output_dir, "", "Where report.md/json/csv, index.html, plots/, vis/, depth/ go");
+DEFINE_string(caps, "5,40", "Depth caps in metres, comma-separated (the paper: 5 and 40)");
+DEFINE_int32(threads, 0, "Worker threads (0 = one per core)");
+DEFINE_string(compare, "",
+              "Configurations to compare, solver:rasterizer,...; the first one's numbers go "
+              "at the top level of report.json and into the tables (overrides --solver and "
+              "--rasterizer)");
+DEFINE_bool(write_vis, true, "Write OUT/vis/<scene>/<frame>.png (first configuration)");
+DEFINE_bool(write_depth, true, "Write OUT/depth/<scene>/<frame>.png (first configuration)");
+DEFINE_double(vis_max_depth, 15.0, "Depth at the top of the colour scale in vis/, m");
+DEFINE_double(vis_max_error, 1.0, "Absolute error at the top of its colour scale in vis/, m");
+
+namespace corridor {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr size_t kMaxListedFailures = 20;  // Failures printed on stderr; all are in the report.
+
+int Usage(const std::string& message) {
+  std::fprintf(stderr, "corridor_eval: %s\n", message.c_str());
+  return 2;
+}
+
+struct Config {
+  std::string solver;      // Solver name or chain.
+  std::string rasterizer;  // Rasteriser name.
+};
+
+// --compare=a:b,c:d, or the --solver/--rasterizer pair when it is empty.
+Status ParseConfigs(const std::string& text, std::vector<Config>* configs) {
+  configs->clear();
+  if (text.empty()) {
+    configs->push_back({FLAGS_solver, FLAGS_rasterizer});
+    return Status::Ok();
+  }
+  std::set<std::string> seen;
+  size_t begin = 0;
+  while (true) {
+    const size_t comma = text.find(',', begin);
+    const std::string item = text.substr(begin, comma - begin);
+    const size_t colon = item.find(':');
+    if (colon == std::string::npos || colon == 0 || colon + 1 == item.size() ||
+        item.find(':', colon + 1) != std::string::npos) {
+      return Status::InvalidArgument("--compare: '" + item +
+                                     "' is not solver:rasterizer (e.g. grid:paper)");
+    }
+    if (!seen.insert(item).second) {
+      return Status::InvalidArgument("--compare: " + item + " is given twice");
+    }
+    configs->push_back({item.substr(0, colon), item.substr(colon + 1)});
+    if (comma == std::string::npos) break;
+    begin = comma + 1;
+  }
+  return Status::Ok();
+}
+
+Status WriteReports(const std::vector<EvalReport>& reports, const std::string& out) {
+  ReportContext context;
+  context.dataset = FLAGS_dataset;
+  Status status = WritePlots(reports, out, &context.plot_files);
+  if (!status.ok()) return status;
+  const std::vector<std::pair<std::string, std::string>> files = {
+      {"report.md", ReportMarkdown(reports, context)},
+      {"report.json", ReportJson(reports, context)},
+      {"report.csv", ReportCsv(reports)},
+      {"index.html", ReportHtml(reports, context, FLAGS_write_vis)}};
+  for (const auto& [name, text] : files) {
+    status = WriteTextAtomic((fs::path(out) / name).string(), text);
+    if (!status.ok()) return status;
+  }
+  return Status::Ok();
+}
+
+void PrintSummary(const EvalReport& r) {
+  const GroupSummary& a = r.all;
+  std::printf("%s: %d of %d frames ok; width error %s%%", r.ConfigName().c_str(),
+              a.num_frames - a.num_failed, a.num_frames,
+              FormatNumber(100 * a.width.rel_error, 3).c_str());
+  for (size_t c = 0; c < r.caps.size(); ++c) {
+    const DepthMetrics& m = a.depth[c];
+    std::printf("; %s: AbsRel %s RMSE %s coverage %s", CapLabel(r.caps[c]).c_str(),
+                FormatNumber(m.abs_rel, 4).c_str(), FormatNumber(m.rmse, 3).c_str(),
+                FormatNumber(m.coverage, 3).c_str());
+  }
+  std::printf("\n");
+}
+
+int Main(int argc, char** argv) {
+  gflags::SetUsageMessage(
+      "corridor_eval --dataset=DIR --output_dir=OUT [--solver=NAME] [--rasterizer=NAME] "
+      "[--caps=5,40] [--threads=N] [--compare=solverA:rastA,solverB:rastB]");
+  gflags::ParseCommandLineFlags(&argc, &argv, true);
+  google::InitGoogleLogging(argv[0]);
+  if (argc > 1) return Usage(std::string("unexpected argument '") + argv[1] + "'");
+  if (FLAGS_dataset.empty()) return Usage("--dataset is required (a dataset root)");
+  if (FLAGS_output_dir.empty()) return Usage("--output_dir is required");
+  if (!(FLAGS_vis_max_depth > 0)) return Usage("--vis_max_depth must be positive");
+  if (!(FLAGS_vis_max_error > 0)) return Usage("--vis_max_error must be positive");
+  FrameEvalOptions frame_options;
+  Status status = ParseCaps(FLAGS_caps, &frame_options.caps);
+  if (!status.ok()) return Usage(status.message());
+  EvalRunOptions run_options;
+  status = ResolveThreadCount(FLAGS_threads, &run_options.threads);
+  if (!status.ok()) return Usage(status.message());
+  std::vector<Config> configs;
+  status = ParseConfigs(FLAGS_compare, &configs);
+  if (!status.ok()) return Usage(status.message());
+
+  RecoverDepthOptions base;
+  status = RecoverDepthOptionsFromFlags(&base);
+  if (!status.ok()) return Usage(status.message());
+  std::vector<std::unique_ptr<DepthRecoverer>> recoverers(configs.size());
+  for (size_t c = 0; c < configs.size(); ++c) {
+    RecoverDepthOptions options = base;
+    options.solver = configs[c].solver;
+    options.rasterizer = configs[c].rasterizer;
+    status = DepthRecoverer::Create(options, &recoverers[c]);
+    if (!status.ok()) return Usage(status.message());
+  }
+  std::vector<InputScene> scenes;
+  status = ResolveInput(FLAGS_dataset, CameraOverridesFromFlags(), &scenes);
+  if (!status.ok()) return Usage(status.message());
+  size_t total = 0;
+  for (const auto& scene : scenes) total += scene.frames.size();
+  if (total == 0) return Usage("no frames to evaluate in " + FLAGS_dataset);
+
+  std::vector<EvalReport> reports;
+  for (size_t c = 0; c < configs.size(); ++c) {
+    FrameEvalOptions options = frame_options;
+    if (c == 0) options.output_dir = FLAGS_output_dir;  // Pictures for the first one only.
+    options.write_depth = FLAGS_write_depth;
+    options.write_vis = FLAGS_write_vis;
+    options.vis_max_depth = FLAGS_vis_max_depth;
+    options.vis_max_error = FLAGS_vis_max_error;
+    run_options.progress_label = configs[c].solver + ":" + configs[c].rasterizer;
+    std::vector<FrameRecord> records;
+    status = EvaluateScenes(scenes, *recoverers[c], options, run_options, &records);
+    if (!status.ok()) return Usage("cannot write output: " + status.ToString());
+    reports.push_back(
+        BuildReport(records, frame_options.caps, configs[c].solver, configs[c].rasterizer));
+  }
+  status = WriteReports(reports, FLAGS_output_dir);
+  if (!status.ok()) return Usage("cannot write the report: " + status.ToString());
+
+  int failed = 0, evaluated = 0;
+  for (const auto& r : reports) {
+    PrintSummary(r);
+    failed += r.all.num_failed;
+    evaluated += r.all.num_frames - r.all.num_failed;
+  }
+  std::printf("corridor_eval: report in %s/index.html\n", FLAGS_output_dir.c_str());
+  const auto& failures = reports.front().failures;
+  for (size_t i = 0; i < failures.size() && i < kMaxListedFailures; ++i) {
+    std::fprintf(stderr, "corridor_eval: %s/%s failed: %s\n", failures[i].scene.c_str(),
+                 failures[i].frame.c_str(), failures[i].reason.c_str());
+  }
+  if (failures.size() > kMaxListedFailures) {
+    std::fprintf(stderr, "corridor_eval: ... and %zu more failed frames (see report.md)\n",
+                 failures.size() - kMaxListedFailures);
+  }
+  if (evaluated == 0) {
+    std::fprintf(stderr, "corridor_eval: no frame could be evaluated\n");
+    return 2;
+  }
+  return failed > 0 ? 1 : 0;
+}
+
+}  // namespace
+}  // namespace corridor
+
+int main(int argc, char** argv) { return corridor::Main(argc, argv); }
