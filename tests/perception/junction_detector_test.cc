@@ -91,8 +91,7 @@ TEST(JunctionDetectorTest, OptionsCheckRejectsBadValues) {
   o.roi_top_fraction = 1.2;
   EXPECT_FALSE(o.Check(&why));
   o = JunctionDetectorOptions();
-  o.canny_low = 100;
-  o.canny_high = 50;
+  o.canny_low_ratio = 1.5;
   EXPECT_FALSE(o.Check(&why));
   EXPECT_NE(why.find("Canny"), std::string::npos) << why;
   o = JunctionDetectorOptions();
