@@ -1,0 +1,61 @@
+#include "synth/presets.h"
+
+#include <filesystem>
+
+#include <gtest/gtest.h>
+
+#include "io/dataset.h"
+#include "io/image_io.h"
+
+namespace corridor {
+namespace synth {
+namespace {
+
+TEST(PresetsTest, PaperPresetMirrorsThePaperDataset) {
+  const auto presets = PaperPreset();
+  ASSERT_EQ(presets.size(), 9u);
+  int easy = 0, hard = 0;
+  for (const auto& p : presets) {
+    EXPECT_EQ(p.poses.size(), 15u);
+    EXPECT_GE(p.scene.width, 1.8);
+    EXPECT_LE(p.scene.width, 3.1);
+    EXPECT_TRUE(p.camera.mount_height == 0.62 || p.camera.mount_height == 0.66);
+    EXPECT_EQ(p.camera.image_width, 420);
+    EXPECT_EQ(p.camera.image_height, 360);
+    easy += p.name.rfind("Cord_E", 0) == 0;
+    hard += p.name.rfind("Cord_H", 0) == 0;
+    std::string why;
+    EXPECT_TRUE(p.scene.Check(&why)) << why;
+  }
+  EXPECT_EQ(easy, 6);
+  EXPECT_EQ(hard, 3);
+}
+
+TEST(PresetsTest, WriteSceneProducesTheDatasetLayout) {
+  const std::string root = ::testing::TempDir() + "/synth_presets_test";
+  std::filesystem::remove_all(root);
+  ScenePreset preset = PaperPreset()[0];
+  preset.poses.resize(2);
+  int calls = 0;
+  ASSERT_TRUE(WriteScene(root, preset, [&](int, int) { ++calls; }).ok());
+  EXPECT_EQ(calls, 2);
+  std::vector<DatasetScene> scenes;
+  const Status status = LoadDataset(root, &scenes);
+  ASSERT_TRUE(status.ok()) << status.ToString();
+  ASSERT_EQ(scenes.size(), 1u);
+  EXPECT_EQ(scenes[0].name, "Cord_E01");
+  EXPECT_DOUBLE_EQ(scenes[0].camera.mount_height, preset.camera.mount_height);
+  ASSERT_EQ(scenes[0].frames.size(), 2u);
+  for (const auto& frame : scenes[0].frames) {
+    EXPECT_TRUE(frame.has_truth);
+    EXPECT_DOUBLE_EQ(frame.truth.geometry.width, preset.scene.width);
+    cv::Mat depth;
+    ASSERT_TRUE(ReadDepthPng(frame.depth_path, &depth).ok());
+    EXPECT_EQ(depth.cols, 420);
+    EXPECT_GT(cv::countNonZero(depth > 0), depth.total() * 0.95);
+  }
+}
+
+}  // namespace
+}  // namespace synth
+}  // namespace corridor
