@@ -52,7 +52,15 @@ double BoundaryScore(const cv::Mat& lab, const FloorAppearance& floor, const Mer
   const Eigen::Vector2d normal = line.line.head<2>();  // Points down (toward the floor).
   const int samples = 24;
   const double offset = 4.0;  // Strip distance from the line, px.
-  double above = 0, below = 0;
+  // Floor-likeness of each strip, per sample, so that a few samples on grout, a box or a door
+  // do not decide: the junction has floor just below and something else above. (A baseboard top
+  // has baseboard below; a grout line or a reflection has floor on both sides.)
+  const double sigma = std::max(6.0, 3.0 * floor.spread);
+  const auto likeness = [&](const cv::Vec3f& c) {
+    const double d = Distance(c, floor.lab);
+    return std::exp(-d * d / (2 * sigma * sigma));
+  };
+  double sum = 0;
   int count = 0;
   for (int i = 0; i < samples; ++i) {
     const Eigen::Vector2d p = line.start + (line.end - line.start) * ((i + 0.5) / samples);
@@ -70,16 +78,10 @@ double BoundaryScore(const cv::Mat& lab, const FloorAppearance& floor, const Mer
         cb += cv::Vec3f(lab.at<cv::Vec3b>(vb - roi_top + dv, ub + du));
       }
     }
-    above += Distance(ca / 9.0f, floor.lab);
-    below += Distance(cb / 9.0f, floor.lab);
+    sum += likeness(cb / 9.0f) * (1.0 - likeness(ca / 9.0f));
     ++count;
   }
-  if (count == 0) return 0.0;
-  above /= count;
-  below /= count;
-  const double scale = 2.0 * floor.spread + 4.0;
-  // Above unlike the floor, below like it.
-  return std::tanh((above - below) / scale);
+  return count > 0 ? sum / count : 0.0;
 }
 
 }  // namespace corridor

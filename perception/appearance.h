@@ -16,9 +16,10 @@ struct FloorAppearance {
 // `lab`: the ROI rows [roi_top, image rows) of the image in 8-bit Lab (CV_8UC3).
 FloorAppearance SampleFloor(const cv::Mat& lab, int roi_top);
 
-// How much a line looks like the floor's upper boundary: near +1 when the strip just below it is
-// floor-like and the strip above is not, near 0 or negative for lines inside the floor (grout,
-// reflections) or on the wall (baseboard tops, door bottoms). `lab` as for SampleFloor.
+// How much a line looks like the floor's upper boundary, in [0, 1]: the floor-likeness of the
+// strip just below it times the unlikeness of the strip above. Near 1 for the junction; near 0
+// for lines inside the floor (grout, reflections: floor on both sides) and on the wall (baseboard
+// tops, door bottoms: no floor below). `lab` as for SampleFloor.
 double BoundaryScore(const cv::Mat& lab, const FloorAppearance& floor, const MergedLine& line,
                      int roi_top);
 

@@ -25,7 +25,7 @@ struct JunctionDetectorOptions {
   double merge_distance_px = 4;      // ... and whose lines pass within this distance of each other.
   double min_length_fraction = 0.1;  // Scene prior (eq. 2): shortest junction, fraction of the height H (paper: 0.25).
   double max_length_fraction = 0.5;  // Scene prior (eq. 2): longest junction, fraction of the diagonal (paper 1/2); 0 = no limit.
-  double min_inclination_deg = 3;    // Scene prior: flattest junction, degrees from horizontal.
+  double min_inclination_deg = 8;    // Scene prior: flattest junction, degrees from horizontal (cross-corridor edges are flatter).
   double max_inclination_deg = 80;   // Scene prior: steepest junction, degrees from horizontal (the paper: 90 - atan(H/W), set -1).
   double support_distance_px = 2.0;  // Edge pixels this close to a chosen line support its refit.
   double max_edge_density = 0.2;     // More edge pixels than this fraction of the ROI: noise or texture, not a corridor.

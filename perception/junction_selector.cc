@@ -31,6 +31,44 @@ double VanishingSupport(const Eigen::Vector2d& vp, const std::vector<MergedLine>
   return total > 0 ? agree / total : 0.0;
 }
 
+// Distance from the vanishing point to the line, relative to the line's distance from it.
+bool PassesThrough(const MergedLine& line, const Eigen::Vector2d& vp) {
+  const double off = std::abs(line.line.dot(vp.homogeneous()));
+  const double reach = (0.5 * (line.start + line.end) - vp).norm();
+  return off <= std::max(3.0, 0.02 * reach);
+}
+
+// Direction (unit) from the vanishing point down along the line.
+Eigen::Vector2d DownDirection(const MergedLine& line, const Eigen::Vector2d& vp) {
+  const Eigen::Vector2d far = line.start.y() > line.end.y() ? line.start : line.end;
+  return (far - vp).normalized();
+}
+
+// A baseboard gives two parallel junction-like lines: its top, and below it the junction. When
+// the chosen line has such a partner just below it (within a few degrees, through the same
+// vanishing point, on the floor side) that looks at least nearly as much like the floor's
+// boundary, the partner is the junction.
+int LowerPartner(const std::vector<JunctionCandidate>& side, int chosen, const Eigen::Vector2d& vp,
+                 bool left) {
+  const Eigen::Vector2d d_chosen = DownDirection(side[chosen].line, vp);
+  int best = chosen;
+  double best_angle = 0;
+  for (size_t k = 0; k < side.size(); ++k) {
+    if (static_cast<int>(k) == chosen || !PassesThrough(side[k].line, vp)) continue;
+    if (side[k].boundary < 0.8 * side[chosen].boundary) continue;
+    const Eigen::Vector2d d = DownDirection(side[k].line, vp);
+    // Floor side: turned toward straight down, i.e. toward the image centre.
+    const double cross = d_chosen.x() * d.y() - d_chosen.y() * d.x();
+    const bool inner = left ? cross < 0 : cross > 0;
+    const double angle = std::acos(std::clamp(d_chosen.dot(d), -1.0, 1.0)) * 180.0 / M_PI;
+    if (inner && angle < 6.0 && angle > best_angle) {
+      best = static_cast<int>(k);
+      best_angle = angle;
+    }
+  }
+  return best;
+}
+
 }  // namespace
 
 SelectedPair SelectJunctionPair(const std::vector<JunctionCandidate>& left,
@@ -56,7 +94,9 @@ SelectedPair SelectJunctionPair(const std::vector<JunctionCandidate>& left,
                                  std::min(1.0, r.covered / (0.5 * height));
       const double boundary_term = left[i].boundary + right[j].boundary;
       const double vp_term = VanishingSupport(vp, all_lines, diagonal);
-      const double score = length_term + 2.0 * boundary_term + vp_term;
+      // The appearance of the boundary decides between the junction and the long, straight
+      // grout lines and baseboard tops that share its vanishing point.
+      const double score = length_term + 4.0 * boundary_term + vp_term;
       if (best.left < 0 || score > best.score) {
         best.left = static_cast<int>(i);
         best.right = static_cast<int>(j);
@@ -64,6 +104,10 @@ SelectedPair SelectJunctionPair(const std::vector<JunctionCandidate>& left,
         best.score = score;
       }
     }
+  }
+  if (best.left >= 0) {
+    best.left = LowerPartner(left, best.left, best.vanishing_point, true);
+    best.right = LowerPartner(right, best.right, best.vanishing_point, false);
   }
   return best;
 }

@@ -11,7 +11,7 @@ namespace corridor {
 // A candidate junction with its cues.
 struct JunctionCandidate {
   MergedLine line;        // The merged line.
-  double boundary = 0;    // BoundaryScore: floor below, something else above.
+  double boundary = 0;    // BoundaryScore in [0, 1]: floor below, something else above.
 };
 
 // The chosen pair and why.
