@@ -94,9 +94,12 @@ SelectedPair SelectJunctionPair(const std::vector<JunctionCandidate>& left,
                                  std::min(1.0, r.covered / (0.5 * height));
       const double boundary_term = left[i].boundary + right[j].boundary;
       const double vp_term = VanishingSupport(vp, all_lines, diagonal);
+      // The junctions are the outermost floor boundaries: prefer the pair that opens widest.
+      const Eigen::Vector2d dl = (l.start - vp).normalized(), dr = (r.end - vp).normalized();
+      const double spread_term = std::acos(std::clamp(dl.dot(dr), -1.0, 1.0)) / M_PI;
       // The appearance of the boundary decides between the junction and the long, straight
       // grout lines and baseboard tops that share its vanishing point.
-      const double score = length_term + 4.0 * boundary_term + vp_term;
+      const double score = length_term + 4.0 * boundary_term + vp_term + 2.0 * spread_term;
       if (best.left < 0 || score > best.score) {
         best.left = static_cast<int>(i);
         best.right = static_cast<int>(j);
