@@ -5,6 +5,7 @@
 
 #include <ceres/ceres.h>
 
+#include "estimation/ceres_options.h"
 #include "estimation/closed_form.h"
 #include "estimation/junction_line_residual.h"
 
@@ -54,17 +55,8 @@ Status JointSolver::Solve(const CorridorObservation& observation, const Corridor
   problem.SetParameterLowerBound(x, 1, -lm.max_abs_pitch);
   problem.SetParameterUpperBound(x, 1, lm.max_abs_pitch);
   problem.SetParameterLowerBound(x, 3, 0.05);
-  ceres::Solver::Options solver_options;
-  solver_options.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
-  solver_options.linear_solver_type = ceres::DENSE_QR;
-  solver_options.max_num_iterations = lm.max_iterations;
-  solver_options.function_tolerance = lm.function_tolerance;
-  solver_options.parameter_tolerance = lm.parameter_tolerance;
-  solver_options.gradient_tolerance = lm.gradient_tolerance;
-  solver_options.num_threads = 1;
-  solver_options.logging_type = ceres::SILENT;
   ceres::Solver::Summary ceres_summary;
-  ceres::Solve(solver_options, &problem, &ceres_summary);
+  ceres::Solve(LevenbergMarquardtOptions(lm), &problem, &ceres_summary);
   summary->evaluations = ceres_summary.num_residual_evaluations;
   summary->iterations = static_cast<int>(ceres_summary.iterations.size());
   summary->final_cost = ceres_summary.final_cost;

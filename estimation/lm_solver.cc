@@ -5,6 +5,7 @@
 #include <ceres/ceres.h>
 
 #include "estimation/alternation.h"
+#include "estimation/ceres_options.h"
 
 namespace corridor {
 namespace {
@@ -44,19 +45,8 @@ class LmStageMinimizer : public StageMinimizer {
     problem.SetParameterUpperBound(x, 0, max_abs_angle);
     problem.SetParameterLowerBound(x, 1, second.lower);
     problem.SetParameterUpperBound(x, 1, second.upper);
-    ceres::Solver::Options solver_options;
-    solver_options.minimizer_type = ceres::TRUST_REGION;
-    solver_options.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
-    solver_options.linear_solver_type = ceres::DENSE_QR;
-    solver_options.max_num_iterations = options_.max_iterations;
-    solver_options.function_tolerance = options_.function_tolerance;
-    solver_options.parameter_tolerance = options_.parameter_tolerance;
-    solver_options.gradient_tolerance = options_.gradient_tolerance;
-    solver_options.num_threads = 1;
-    solver_options.logging_type = ceres::SILENT;
-    solver_options.minimizer_progress_to_stdout = false;
     ceres::Solver::Summary summary;
-    ceres::Solve(solver_options, &problem, &summary);
+    ceres::Solve(LevenbergMarquardtOptions(options_), &problem, &summary);
     *evaluations += summary.num_residual_evaluations;
     *cost = summary.final_cost;
     return summary.IsSolutionUsable() && std::isfinite(summary.final_cost);
