@@ -7,6 +7,8 @@
 #include <Eigen/Geometry>
 #include <opencv2/imgproc.hpp>
 
+#include "perception/color_gradient.h"
+
 namespace corridor {
 namespace {
 
@@ -35,58 +37,6 @@ void SetExtent(const std::vector<Eigen::Vector2d>& points, MergedLine* m) {
   m->inclination_deg = std::atan2(std::abs(dv), std::abs(du)) * 180.0 / M_PI;
 }
 
-// The p-th percentile of |dx| + |dy| over the image (a histogram, so linear time).
-double GradientPercentile(const cv::Mat& dx, const cv::Mat& dy, double p) {
-  constexpr int kBins = 2048;
-  std::vector<int> histogram(kBins, 0);
-  for (int r = 0; r < dx.rows; ++r) {
-    const short* gx = dx.ptr<short>(r);
-    const short* gy = dy.ptr<short>(r);
-    for (int c = 0; c < dx.cols; ++c) {
-      ++histogram[std::min(kBins - 1, std::abs(gx[c]) + std::abs(gy[c]))];
-    }
-  }
-  const double target = p / 100.0 * static_cast<double>(dx.total());
-  double count = 0;
-  for (int m = 0; m < kBins; ++m) {
-    count += histogram[m];
-    if (count >= target) return m;
-  }
-  return kBins - 1;
-}
-
-// Colour gradients: per pixel, the Sobel derivatives of the channel whose |dx| + |dy| is the
-// largest, so that a boundary between two colours of equal brightness (a dark baseboard on a
-// dark floor) still gives edges.
-void ColorGradient(const cv::Mat& image, cv::Mat* dx, cv::Mat* dy) {
-  if (image.channels() == 1) {
-    cv::Sobel(image, *dx, CV_16S, 1, 0, 3);
-    cv::Sobel(image, *dy, CV_16S, 0, 1, 3);
-    return;
-  }
-  std::vector<cv::Mat> channels;
-  cv::split(image, channels);
-  cv::Sobel(channels[0], *dx, CV_16S, 1, 0, 3);
-  cv::Sobel(channels[0], *dy, CV_16S, 0, 1, 3);
-  cv::Mat cx, cy;
-  for (size_t c = 1; c < channels.size(); ++c) {
-    cv::Sobel(channels[c], cx, CV_16S, 1, 0, 3);
-    cv::Sobel(channels[c], cy, CV_16S, 0, 1, 3);
-    for (int r = 0; r < dx->rows; ++r) {
-      short* bx = dx->ptr<short>(r);
-      short* by = dy->ptr<short>(r);
-      const short* x = cx.ptr<short>(r);
-      const short* y = cy.ptr<short>(r);
-      for (int u = 0; u < dx->cols; ++u) {
-        if (std::abs(x[u]) + std::abs(y[u]) > std::abs(bx[u]) + std::abs(by[u])) {
-          bx[u] = x[u];
-          by[u] = y[u];
-        }
-      }
-    }
-  }
-}
-
 }  // namespace
 
 EdgeSegments DetectSegments(const cv::Mat& image, int roi_top, const SegmentOptions& options) {
@@ -100,10 +50,14 @@ EdgeSegments DetectSegments(const cv::Mat& image, int roi_top, const SegmentOpti
     smooth = roi;
   }
   cv::Mat dx, dy;
-  ColorGradient(smooth, &dx, &dy);
-  const double high = options.canny_high > 0
-                          ? options.canny_high
-                          : std::max(options.auto_min, GradientPercentile(dx, dy, options.auto_percentile));
+  std::vector<int> histogram;
+  const bool automatic = !(options.canny_high > 0);
+  ColorGradient(smooth, &dx, &dy, automatic ? &histogram : nullptr);
+  const double high =
+      automatic ? std::max(options.auto_min,
+                           HistogramPercentile(histogram, static_cast<double>(dx.total()),
+                                               options.auto_percentile))
+                : options.canny_high;
   out.canny_high = high;
   cv::Canny(dx, dy, out.edges, options.canny_low_ratio * high, high, false);
   std::vector<cv::Vec4i> lines;

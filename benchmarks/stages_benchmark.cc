@@ -1,0 +1,135 @@
+// Time per frame of each stage of the pipeline on the corridor_benchmarks frames, at the three
+// sizes: Stages/<stage>[/<variant>]/<width>x<height>.
+//   detect      DetectJunctions (the edge-extraction thread's work)
+//   segments    its first part: blur, colour gradient, Canny and Hough on the ROI
+//   lab         its Lab conversion of the ROI (floor appearance)
+//   solve/NAME  each solver on the detected junctions' points
+//   rasterize/NAME  each rasteriser on the closed_form+lm geometry
+// OpenCV runs on one thread.
+//   build/benchmarks/stages_benchmark --benchmark_repetitions=5
+
+#include <benchmark/benchmark.h>
+#include <opencv2/core.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "benchmarks/bench_frames.h"
+#include "perception/line_segments.h"
+#include "pipeline/recover_depth.h"
+
+namespace corridor {
+namespace {
+
+void Detect(benchmark::State& state, int width, int height) {
+  cv::setNumThreads(1);
+  const bench::BenchFrame& input = bench::PaperLikeFrame(width, height);
+  const JunctionDetectorOptions options;
+  JunctionPair pair;
+  for (auto _ : state) {
+    const Status status = DetectJunctions(input.frame.bgr, options, &pair);
+    benchmark::DoNotOptimize(status);
+  }
+  if (!pair.status.ok()) state.SkipWithError(pair.status.ToString().c_str());
+}
+
+void Segments(benchmark::State& state, int width, int height) {
+  cv::setNumThreads(1);
+  const bench::BenchFrame& input = bench::PaperLikeFrame(width, height);
+  const JunctionDetectorOptions o;
+  const SegmentOptions options{o.blur_sigma,     o.canny_high,        o.canny_low_ratio,
+                               o.canny_auto_percentile, o.canny_auto_min, o.hough_threshold,
+                               std::max(8.0, o.hough_min_length_fraction * height),
+                               o.hough_max_gap};
+  for (auto _ : state) {
+    const EdgeSegments found = DetectSegments(input.frame.bgr, height / 2, options);
+    benchmark::DoNotOptimize(found.segments.data());
+  }
+}
+
+void Lab(benchmark::State& state, int width, int height) {
+  cv::setNumThreads(1);
+  const bench::BenchFrame& input = bench::PaperLikeFrame(width, height);
+  cv::Mat lab;
+  for (auto _ : state) {
+    cv::cvtColor(input.frame.bgr.rowRange(height / 2, height), lab, cv::COLOR_BGR2Lab);
+    benchmark::DoNotOptimize(lab.data);
+  }
+}
+
+// The solvers' input: the detected junctions of the frame.
+bool DetectedObservation(const bench::BenchFrame& input, CorridorObservation* observation) {
+  JunctionPair pair;
+  const RecoverDepthOptions options;
+  if (!DetectJunctions(input.frame.bgr, options.perception, &pair).ok() || !pair.status.ok()) {
+    return false;
+  }
+  *observation = ObservationFromJunctions(pair, input.camera, options.points_per_line);
+  return true;
+}
+
+void Solve(benchmark::State& state, const std::string& name, int width, int height) {
+  const bench::BenchFrame& input = bench::PaperLikeFrame(width, height);
+  CorridorObservation observation;
+  std::unique_ptr<CorridorSolver> solver;
+  if (!DetectedObservation(input, &observation) ||
+      !CreateSolver(name, SolverOptions(), &solver).ok()) {
+    state.SkipWithError("no junctions or no solver");
+    return;
+  }
+  SolverSummary summary;
+  for (auto _ : state) {
+    const Status status = solver->Solve(observation, nullptr, &summary);
+    benchmark::DoNotOptimize(status);
+  }
+  state.counters["evaluations"] = summary.evaluations;
+  state.counters["width_error_mm"] = 1000 * std::abs(summary.estimate.width - input.frame.truth.width);
+}
+
+void Rasterize(benchmark::State& state, const std::string& name, int width, int height) {
+  const bench::BenchFrame& input = bench::PaperLikeFrame(width, height);
+  CorridorObservation observation;
+  std::unique_ptr<CorridorSolver> solver;
+  std::unique_ptr<DepthRasterizer> rasterizer;
+  SolverSummary summary;
+  if (!DetectedObservation(input, &observation) ||
+      !CreateSolver("closed_form+lm", SolverOptions(), &solver).ok() ||
+      !solver->Solve(observation, nullptr, &summary).ok() ||
+      !CreateRasterizer(name, RasterizerOptions(), &rasterizer).ok()) {
+    state.SkipWithError("no geometry or no rasterizer");
+    return;
+  }
+  CorridorGeometry geometry = summary.estimate;
+  geometry.camera_height = input.camera.mount_height;
+  for (auto _ : state) {
+    cv::Mat depth;  // A new image per frame, as RecoverDepth makes.
+    const Status status = rasterizer->Render(geometry, input.camera, &depth);
+    benchmark::DoNotOptimize(status);
+  }
+}
+
+const bool registered = [] {
+  for (const auto& size : bench::kSizes) {
+    const int w = size[0], h = size[1];
+    const std::string suffix = "/" + bench::SizeName(w, h);
+    benchmark::RegisterBenchmark(("Stages/detect" + suffix).c_str(), Detect, w, h)
+        ->Unit(benchmark::kMicrosecond);
+    benchmark::RegisterBenchmark(("Stages/segments" + suffix).c_str(), Segments, w, h)
+        ->Unit(benchmark::kMicrosecond);
+    benchmark::RegisterBenchmark(("Stages/lab" + suffix).c_str(), Lab, w, h)
+        ->Unit(benchmark::kMicrosecond);
+    for (const char* solver : {"grid", "closed_form", "lm", "closed_form+lm", "joint"}) {
+      benchmark::RegisterBenchmark(("Stages/solve/" + std::string(solver) + suffix).c_str(), Solve,
+                                   std::string(solver), w, h)
+          ->Unit(benchmark::kMicrosecond);
+    }
+    for (const char* rasterizer : {"exact", "paper"}) {
+      benchmark::RegisterBenchmark(
+          ("Stages/rasterize/" + std::string(rasterizer) + suffix).c_str(), Rasterize,
+          std::string(rasterizer), w, h)
+          ->Unit(benchmark::kMicrosecond);
+    }
+  }
+  return true;
+}();
+
+}  // namespace
+}  // namespace corridor

@@ -1,0 +1,141 @@
+#include "perception/color_gradient.h"
+
+#include <algorithm>
+#include <cstdlib>
+
+#include <opencv2/imgproc.hpp>
+
+namespace corridor {
+namespace {
+
+// cv::BORDER_REFLECT_101 index of i in [0, n), as cv::borderInterpolate.
+int Reflect101(int i, int n) {
+  if (n == 1) return 0;
+  if (i < 0) return -i;
+  if (i >= n) return 2 * n - 2 - i;
+  return i;
+}
+
+// Sobel of one 8-bit row triple (above, centre, below): gx = s[u+1] - s[u-1] with
+// s = above + 2 centre + below, gy = t[u-1] + 2 t[u] + t[u+1] with t = below - above. `s` and `t`
+// are scratch rows of cols + 2 with the reflected columns at 0 and cols + 1. The first channel
+// (kFirst) writes gx, gy and |gx| + |gy| to bx, by, best; the others replace them where their
+// |gx| + |gy| is larger.
+template <bool kFirst>
+void SobelRow(const uchar* above, const uchar* centre, const uchar* below, int cols,
+              short* __restrict s, short* __restrict t, short* __restrict bx,
+              short* __restrict by, short* __restrict best) {
+  for (int u = 0; u < cols; ++u) {
+    s[u + 1] = static_cast<short>(above[u] + 2 * centre[u] + below[u]);
+    t[u + 1] = static_cast<short>(below[u] - above[u]);
+  }
+  s[0] = s[Reflect101(-1, cols) + 1];
+  t[0] = t[Reflect101(-1, cols) + 1];
+  s[cols + 1] = s[Reflect101(cols, cols) + 1];
+  t[cols + 1] = t[Reflect101(cols, cols) + 1];
+  for (int u = 0; u < cols; ++u) {
+    const short x = static_cast<short>(s[u + 2] - s[u]);
+    const short y = static_cast<short>(t[u] + 2 * t[u + 1] + t[u + 2]);
+    const short m = static_cast<short>(std::abs(x) + std::abs(y));
+    if (kFirst) {
+      bx[u] = x;
+      by[u] = y;
+      best[u] = m;
+    } else {
+      // Branch-free selects through a mask (all ones where this channel's edge is stronger),
+      // so that the loop vectorises.
+      const short larger = static_cast<short>(-static_cast<short>(m > best[u]));
+      bx[u] = static_cast<short>((x & larger) | (bx[u] & ~larger));
+      by[u] = static_cast<short>((y & larger) | (by[u] & ~larger));
+      best[u] = static_cast<short>((m & larger) | (best[u] & ~larger));
+    }
+  }
+}
+
+// The same through cv::Sobel: grey images (a view keeps using the pixels around it, as
+// cv::Sobel does) and depths other than 8 bits.
+void ColorGradientOpenCv(const cv::Mat& image, cv::Mat* dx, cv::Mat* dy) {
+  if (image.channels() == 1) {
+    cv::Sobel(image, *dx, CV_16S, 1, 0, 3);
+    cv::Sobel(image, *dy, CV_16S, 0, 1, 3);
+    return;
+  }
+  std::vector<cv::Mat> channels;
+  cv::split(image, channels);
+  cv::Sobel(channels[0], *dx, CV_16S, 1, 0, 3);
+  cv::Sobel(channels[0], *dy, CV_16S, 0, 1, 3);
+  cv::Mat cx, cy;
+  for (size_t c = 1; c < channels.size(); ++c) {
+    cv::Sobel(channels[c], cx, CV_16S, 1, 0, 3);
+    cv::Sobel(channels[c], cy, CV_16S, 0, 1, 3);
+    for (int r = 0; r < dx->rows; ++r) {
+      short* bx = dx->ptr<short>(r);
+      short* by = dy->ptr<short>(r);
+      const short* x = cx.ptr<short>(r);
+      const short* y = cy.ptr<short>(r);
+      for (int u = 0; u < dx->cols; ++u) {
+        if (std::abs(x[u]) + std::abs(y[u]) > std::abs(bx[u]) + std::abs(by[u])) {
+          bx[u] = x[u];
+          by[u] = y[u];
+        }
+      }
+    }
+  }
+}
+
+}  // namespace
+
+void ColorGradient(const cv::Mat& image, cv::Mat* dx, cv::Mat* dy, std::vector<int>* histogram) {
+  if (image.depth() != CV_8U || image.channels() == 1) {
+    ColorGradientOpenCv(image, dx, dy);
+    if (histogram != nullptr) {
+      histogram->assign(kGradientBins, 0);
+      for (int r = 0; r < dx->rows; ++r) {
+        const short* gx = dx->ptr<short>(r);
+        const short* gy = dy->ptr<short>(r);
+        for (int u = 0; u < dx->cols; ++u) {
+          ++(*histogram)[std::min(kGradientBins - 1, std::abs(gx[u]) + std::abs(gy[u]))];
+        }
+      }
+    }
+    return;
+  }
+  const int rows = image.rows, cols = image.cols, n = image.channels();
+  std::vector<cv::Mat> channels;
+  cv::split(image, channels);
+  dx->create(rows, cols, CV_16S);
+  dy->create(rows, cols, CV_16S);
+  if (histogram != nullptr) histogram->assign(kGradientBins, 0);
+  // Scratch rows: s, t (cols + 2 each) and the best |dx| + |dy| so far.
+  std::vector<short> scratch(2 * (cols + 2) + cols);
+  short* s = scratch.data();
+  short* t = s + cols + 2;
+  short* best = t + cols + 2;
+  for (int r = 0; r < rows; ++r) {
+    const int above = Reflect101(r - 1, rows), below = Reflect101(r + 1, rows);
+    short* bx = dx->ptr<short>(r);
+    short* by = dy->ptr<short>(r);
+    SobelRow<true>(channels[0].ptr<uchar>(above), channels[0].ptr<uchar>(r),
+                   channels[0].ptr<uchar>(below), cols, s, t, bx, by, best);
+    for (int c = 1; c < n; ++c) {
+      SobelRow<false>(channels[c].ptr<uchar>(above), channels[c].ptr<uchar>(r),
+                      channels[c].ptr<uchar>(below), cols, s, t, bx, by, best);
+    }
+    if (histogram != nullptr) {
+      int* bins = histogram->data();
+      for (int u = 0; u < cols; ++u) ++bins[std::min<int>(kGradientBins - 1, best[u])];
+    }
+  }
+}
+
+double HistogramPercentile(const std::vector<int>& histogram, double total, double p) {
+  const double target = p / 100.0 * total;
+  double count = 0;
+  for (size_t m = 0; m < histogram.size(); ++m) {
+    count += histogram[m];
+    if (count >= target) return static_cast<double>(m);
+  }
+  return static_cast<double>(histogram.size()) - 1;
+}
+
+}  // namespace corridor

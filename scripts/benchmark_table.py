@@ -1,0 +1,89 @@
+#!/usr/bin/env python3
+"""Markdown table of corridor_benchmarks results (Google Benchmark JSON).
+
+Usage: python3 scripts/benchmark_table.py FILE.json
+
+Reads the EndToEnd/<config>/<width>x<height> benchmarks and prints, per size, the median time per
+frame of every config (the mean when the run had no repetitions), in milliseconds, and the
+ratios paper/best and best/floor. Standard library only.
+"""
+
+import json
+import re
+import statistics
+import sys
+from collections import defaultdict
+
+NAME = re.compile(r"^EndToEnd/([^/]+)/(\d+)x(\d+)$")
+TO_MS = {"ns": 1e-6, "us": 1e-3, "ms": 1.0, "s": 1e3}
+MAIN_CONFIGS = ["paper", "best", "floor"]
+
+
+def load_times(path):
+    """{(config, (w, h)): milliseconds} from the JSON: medians of repetitions, else means."""
+    with open(path, encoding="utf-8") as f:
+        data = json.load(f)
+    runs = defaultdict(list)      # Individual iterations-runs.
+    aggregates = {}               # (key, aggregate name) -> ms, when Google Benchmark wrote them.
+    for b in data.get("benchmarks", []):
+        if b.get("error_occurred"):
+            continue
+        match = NAME.match(b.get("run_name", b["name"]))
+        if not match:
+            continue
+        key = (match.group(1), (int(match.group(2)), int(match.group(3))))
+        ms = b["real_time"] * TO_MS[b.get("time_unit", "ns")]
+        if b.get("run_type") == "aggregate":
+            aggregates[(key, b.get("aggregate_name"))] = ms
+        else:
+            runs[key].append(ms)
+    times = {}
+    for key in set(runs) | {k for k, _ in aggregates}:
+        if (key, "median") in aggregates:
+            times[key] = aggregates[(key, "median")]
+        elif len(runs[key]) > 1:
+            times[key] = statistics.median(runs[key])
+        elif (key, "mean") in aggregates:
+            times[key] = aggregates[(key, "mean")]
+        elif runs[key]:
+            times[key] = statistics.mean(runs[key])
+    repeated = any(len(v) > 1 for v in runs.values()) or any(
+        a == "median" for _, a in aggregates)
+    return times, repeated, data.get("context", {})
+
+
+def ratio(a, b):
+    return "-" if a is None or b is None or b == 0 else f"{a / b:.1f}x"
+
+
+def fmt(ms):
+    return "-" if ms is None else f"{ms:.2f}"
+
+
+def main(argv):
+    if len(argv) != 2:
+        print(__doc__, file=sys.stderr)
+        return 2
+    times, repeated, context = load_times(argv[1])
+    if not times:
+        print(f"{argv[1]}: no EndToEnd/<config>/<width>x<height> results", file=sys.stderr)
+        return 1
+    sizes = sorted({size for _, size in times}, key=lambda s: s[0] * s[1])
+    extra = sorted({c for c, _ in times} - set(MAIN_CONFIGS))
+    configs = [c for c in MAIN_CONFIGS if any(k[0] == c for k in times)] + extra
+    stat = "median" if repeated else "mean"
+    print(f"Time per frame, ms ({stat} of real time; {context.get('num_cpus', '?')} CPUs "
+          f"at {context.get('mhz_per_cpu', '?')} MHz, {context.get('date', '')})")
+    print()
+    print("| size | " + " | ".join(configs) + " | paper/best | best/floor |")
+    print("|---|" + "---:|" * (len(configs) + 2))
+    for size in sizes:
+        row = [times.get((c, size)) for c in configs]
+        paper, best, floor = (times.get((c, size)) for c in MAIN_CONFIGS)
+        print(f"| {size[0]}x{size[1]} | " + " | ".join(fmt(t) for t in row) +
+              f" | {ratio(paper, best)} | {ratio(best, floor)} |")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
