@@ -16,20 +16,28 @@ namespace {
 
 constexpr int kMinImageSide = 24;  // Smaller images cannot show a corridor.
 
-// Edge pixels of the ROI within `distance` of the line and on the floor side of the vanishing
-// point, in full-image coordinates.
-std::vector<Eigen::Vector2d> SupportPixels(const std::vector<cv::Point>& edges, int roi_top,
-                                           const Eigen::Vector3d& line, const Eigen::Vector2d& vp,
-                                           bool left, double distance) {
-  std::vector<Eigen::Vector2d> support;
+// Edge pixels of the ROI on the floor side of the vanishing point (left or right of it, and below
+// it), in full-image coordinates and in the edge map's order.
+std::vector<Eigen::Vector2d> FloorSidePixels(const std::vector<cv::Point>& edges, int roi_top,
+                                             const Eigen::Vector2d& vp, bool left) {
+  std::vector<Eigen::Vector2d> side;
+  side.reserve(edges.size());
   for (const auto& e : edges) {
     const Eigen::Vector2d p(e.x, e.y + roi_top);
-    if (std::abs(line.dot(p.homogeneous())) > distance) continue;
     if (left ? p.x() > vp.x() : p.x() < vp.x()) continue;
     if (p.y() < vp.y()) continue;
-    support.push_back(p);
+    side.push_back(p);
   }
-  return support;
+  return side;
+}
+
+// The pixels of `side` within `distance` of the line, in order.
+void SupportPixels(const std::vector<Eigen::Vector2d>& side, const Eigen::Vector3d& line,
+                   double distance, std::vector<Eigen::Vector2d>* support) {
+  support->clear();
+  for (const auto& p : side) {
+    if (!(std::abs(line.dot(p.homogeneous())) > distance)) support->push_back(p);
+  }
 }
 
 // Huber-weighted total least squares refit; false when too few points.
@@ -55,14 +63,22 @@ JunctionLine Refine(const JunctionCandidate& candidate, const std::vector<cv::Po
                     double image_height) {
   JunctionLine out;
   Eigen::Vector3d line = candidate.line.line;
-  std::vector<Eigen::Vector2d> support;
+  const std::vector<Eigen::Vector2d> side = FloorSidePixels(edges, roi_top, vp, left);
+  std::vector<Eigen::Vector2d> support, fitted;  // `fitted`: the pixels `line` was fitted to.
+  bool final_support = false;  // True once `support` is the final (distance, line) support.
   for (int round = 0; round < 3; ++round) {
-    support = SupportPixels(edges, roi_top, line, vp, left, round == 0 ? 2 * distance : distance);
+    SupportPixels(side, line, round == 0 ? 2 * distance : distance, &support);
+    // The same pixels give the same fit (RefitLine is deterministic): the line has converged.
+    if (round > 0 && support == fitted) {
+      final_support = true;
+      break;
+    }
     Eigen::Vector3d refit;
     if (!RefitLine(support, &refit)) break;
     line = refit;
+    fitted.swap(support);
   }
-  support = SupportPixels(edges, roi_top, line, vp, left, distance);
+  if (!final_support) SupportPixels(side, line, distance, &support);
   out.line = line;
   const Eigen::Vector2d direction(line.y(), -line.x());
   const Eigen::Vector2d origin = -line.z() * line.head<2>();
@@ -84,7 +100,7 @@ JunctionLine Refine(const JunctionCandidate& candidate, const std::vector<cv::Po
   out.near_end = a.y() > b.y() ? a : b;
   out.far_end = a.y() > b.y() ? b : a;
   out.support = std::move(support);
-  out.confidence = std::clamp(0.5 * (1.0 + candidate.boundary), 0.0, 1.0) *
+  out.confidence = std::clamp(candidate.boundary, 0.0, 1.0) *
                    std::min(1.0, out.support_length / (0.25 * image_height));
   return out;
 }

@@ -7,6 +7,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "estimation/corridor_observation.h"
+#include "estimation/junction_line_residual.h"
 
 namespace corridor {
 namespace {
@@ -26,15 +27,26 @@ Status ToBgr(const cv::Mat& image, const Camera& camera, cv::Mat* bgr) {
         << camera.image_width << "x" << camera.image_height;
     return Status::InvalidArgument(msg.str());
   }
-  if (image.depth() != CV_8U) return Status::InvalidArgument("image must be 8-bit");
-  if (image.channels() == 3) {
-    *bgr = image;
-  } else if (image.channels() == 1) {
-    cv::cvtColor(image, *bgr, cv::COLOR_GRAY2BGR);
-  } else if (image.channels() == 4) {
-    cv::cvtColor(image, *bgr, cv::COLOR_BGRA2BGR);
+  cv::Mat eight_bit = image;
+  if (image.depth() == CV_16U) {
+    image.convertTo(eight_bit, CV_8U, 1.0 / 257.0);  // 65535 -> 255, as ReadColorImage does.
+  } else if (image.depth() != CV_8U) {
+    return Status::InvalidArgument("image must be 8- or 16-bit unsigned, but it is " +
+                                   cv::typeToString(image.type()));
+  }
+  if (eight_bit.channels() == 3) {
+    *bgr = eight_bit;
+  } else if (eight_bit.channels() == 1) {
+    cv::cvtColor(eight_bit, *bgr, cv::COLOR_GRAY2BGR);
+  } else if (eight_bit.channels() == 2) {  // Grey + alpha: keep the grey.
+    cv::Mat grey;
+    cv::extractChannel(eight_bit, grey, 0);
+    cv::cvtColor(grey, *bgr, cv::COLOR_GRAY2BGR);
+  } else if (eight_bit.channels() == 4) {
+    cv::cvtColor(eight_bit, *bgr, cv::COLOR_BGRA2BGR);
   } else {
-    return Status::InvalidArgument("image must have 1, 3 or 4 channels");
+    return Status::InvalidArgument("image must have 1, 2, 3 or 4 channels, but it has " +
+                                   std::to_string(eight_bit.channels()));
   }
   return Status::Ok();
 }
@@ -66,10 +78,14 @@ bool RecoverDepthOptions::Check(std::string* why) const {
     reason = "max_abs_yaw must be in (0, pi/2)";
   } else if (!(max_abs_pitch > 0 && max_abs_pitch < M_PI / 2)) {
     reason = "max_abs_pitch must be in (0, pi/2)";
+  } else if (!(max_line_error > 0 && std::isfinite(max_line_error))) {
+    reason = "max_line_error must be positive and finite";
   } else if (!(ceiling_height >= 0 && std::isfinite(ceiling_height))) {
     reason = "ceiling_height must be >= 0 (0 = unknown)";
   } else if (!perception.Check(&reason)) {
     reason = "perception: " + reason;
+  } else if (!ceiling.Check(&reason)) {
+    reason = "ceiling: " + reason;
   }
   if (reason.empty()) return true;
   if (why != nullptr) *why = reason;
@@ -94,6 +110,31 @@ Status CheckPlausible(const CorridorGeometry& g, const RecoverDepthOptions& opti
   } else {
     return Status::Ok();
   }
+  return Status::ImplausibleGeometry(msg.str());
+}
+
+Status CheckLineFit(const CorridorGeometry& g, const CorridorObservation& observation,
+                    const Camera& camera, const RecoverDepthOptions& options) {
+  const FloorIntrinsics k{observation.fx, observation.fy, observation.cx, observation.cy,
+                          observation.camera_height};
+  const double x[JunctionLineResidual::kNumParameters] = {g.yaw, g.pitch, g.offset, g.width};
+  double sum = 0;
+  int n = 0;
+  bool defined = true;
+  for (const int side : {-1, 1}) {
+    for (const Eigen::Vector2d& p : side < 0 ? observation.left : observation.right) {
+      double r = 0;
+      defined = defined && JunctionLineResidual(k, p.x(), p.y(), side)(x, &r) && std::isfinite(r);
+      sum += r * r;
+      ++n;
+    }
+  }
+  const double rms = n > 0 ? std::sqrt(sum / n) : 0.0;
+  const double limit = options.max_line_error * std::hypot(camera.image_width, camera.image_height);
+  if (defined && rms <= limit) return Status::Ok();
+  std::ostringstream msg;
+  msg << "the estimate does not explain the junction lines (points " << rms
+      << " px RMS from the predicted lines, limit " << limit << " px)";
   return Status::ImplausibleGeometry(msg.str());
 }
 
@@ -139,6 +180,7 @@ Status DepthRecoverer::Detect(const cv::Mat& image, const Camera& camera,
   cv::Mat bgr;
   Status status = ToBgr(image, camera, &bgr);
   if (!status.ok()) return finish(status);
+  result->image = bgr;
   status = DetectJunctions(bgr, options_.perception, &result->junctions);
   if (!status.ok()) return finish(status);
   return finish(result->junctions.status);
@@ -167,7 +209,15 @@ Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* res
   geometry.camera_height = camera.mount_height;
   geometry.ceiling_height = options_.ceiling_height;
   status = CheckPlausible(geometry, options_);
+  if (status.ok()) status = CheckLineFit(geometry, observation, camera, options_);
   if (!status.ok()) return finish(status);
+  stage = Clock::now();
+  if (options_.ceiling_height <= 0 && options_.estimate_ceiling && !result->image.empty()) {
+    status = DetectCeiling(result->image, camera, geometry, options_.ceiling, &result->ceiling);
+    if (!status.ok()) return finish(status);
+    if (result->ceiling.found) geometry.ceiling_height = result->ceiling.height;
+  }
+  result->times.ceiling = SecondsSince(stage);
   result->geometry = geometry;
   result->has_geometry = true;
 

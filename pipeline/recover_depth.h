@@ -11,6 +11,7 @@
 #include "depth/rasterizer.h"
 #include "estimation/corridor_observation.h"
 #include "estimation/solver.h"
+#include "perception/ceiling_detector.h"
 #include "perception/junction_detector.h"
 #include "perception/junction_lines.h"
 
@@ -18,7 +19,7 @@ namespace corridor {
 
 // Everything RecoverDepth can be told. The defaults just work on a calibrated corridor image.
 struct RecoverDepthOptions {
-  std::string solver = "closed_form+lm";   // Solver name or chain (grid, closed_form, lm, ...).
+  std::string solver = "joint";            // Solver name or chain (grid, closed_form, lm, joint, ...).
   std::string rasterizer = "exact";        // Rasteriser name: exact or paper.
   JunctionDetectorOptions perception;      // Junction-line detection (paper III-A).
   SolverOptions solver_options;            // Options of every solver.
@@ -28,7 +29,12 @@ struct RecoverDepthOptions {
   double max_width = 20.0;                 // Wider estimates are implausible, m.
   double max_abs_yaw = 1.2;                // |yaw| above this is implausible, rad (~69 deg).
   double max_abs_pitch = 0.8;              // |pitch| above this is implausible, rad (~46 deg).
-  double ceiling_height = 0.0;             // Known ceiling height above the floor, m (0 = none).
+  double max_line_error = 0.01;            // RMS distance of the junction points to the lines the
+                                           // estimate predicts, over the image diagonal; more is
+                                           // implausible (e.g. a solver stopped at a bound).
+  double ceiling_height = 0.0;             // Known ceiling height above the floor, m (0 = estimate or none).
+  bool estimate_ceiling = true;            // Without a known height, look for the ceiling/wall junctions.
+  CeilingDetectorOptions ceiling;          // Ceiling-height search (beyond the paper).
 
   bool Check(std::string* why) const;
 };
@@ -37,6 +43,7 @@ struct RecoverDepthOptions {
 struct StageTimes {
   double perception = 0;  // Junction-line detection.
   double solve = 0;       // Geometry estimation.
+  double ceiling = 0;     // Ceiling-height search.
   double rasterize = 0;   // Dense depth.
   double total = 0;       // The whole call.
 };
@@ -47,6 +54,8 @@ struct RecoverDepthResult {
   CorridorGeometry geometry;      // The estimate (valid when has_geometry).
   JunctionPair junctions;         // Both junction lines (raw pixels), as detected.
   SolverSummary solver_summary;   // What the solver reported.
+  CeilingEstimate ceiling;        // The ceiling search (found = false when not run or not seen).
+  cv::Mat image;                  // The frame as 8-bit BGR (set by Detect, used by Reconstruct).
   cv::Mat depth;                  // CV_32F metres, camera-frame z, 0 = no estimate.
   StageTimes times;               // Per-stage wall time.
 };
@@ -60,7 +69,8 @@ class DepthRecoverer {
   static Status Create(const RecoverDepthOptions& options,
                        std::unique_ptr<DepthRecoverer>* recoverer);
 
-  // One frame. The camera must hold a positive mount height. Returns result->status.
+  // One frame: 8- or 16-bit, grey, grey+alpha, BGR or BGRA, of the camera's size. The camera
+  // must hold a positive mount height. Returns result->status.
   // Equivalent to Detect followed, when it succeeds, by Reconstruct.
   Status Recover(const cv::Mat& image, const Camera& camera, RecoverDepthResult* result) const;
 
@@ -92,5 +102,12 @@ CorridorObservation ObservationFromJunctions(const JunctionPair& junctions, cons
 
 // Is the estimate a corridor? kImplausibleGeometry with the reason otherwise.
 Status CheckPlausible(const CorridorGeometry& geometry, const RecoverDepthOptions& options);
+
+// Does the estimate explain the junctions it was fitted to? kImplausibleGeometry when the RMS
+// pixel distance of the observation's points to the junction lines the geometry predicts exceeds
+// options.max_line_error times the camera's image diagonal: the lines fit no corridor (parallel,
+// meeting below the points) or the solver stopped at the edge of its search range.
+Status CheckLineFit(const CorridorGeometry& geometry, const CorridorObservation& observation,
+                    const Camera& camera, const RecoverDepthOptions& options);
 
 }  // namespace corridor

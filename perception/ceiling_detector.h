@@ -1,0 +1,43 @@
+#pragma once
+
+#include <string>
+
+#include <opencv2/core.hpp>
+
+#include "core/camera.h"
+#include "core/corridor_geometry.h"
+#include "core/status.h"
+
+namespace corridor {
+
+// Finding the ceiling height once the walls are known (beyond the paper; geometry.md s6).
+struct CeilingDetectorOptions {
+  double min_height = 1.8;         // Lowest ceiling considered, m above the floor.
+  double max_height = 6.0;         // Highest ceiling considered, m above the floor.
+  double step = 0.01;              // Search step of the ceiling height, m.
+  double near_distance = 1.0;      // Junction samples from this distance along the corridor, m...
+  double far_distance = 30.0;      // ... to this one.
+  int samples = 80;                // Samples per junction line.
+  double min_support = 0.35;       // Fraction of a line's visible samples on edges to accept it.
+
+  bool Check(std::string* why) const;
+};
+
+struct CeilingEstimate {
+  bool found = false;        // True when at least one ceiling/wall junction was seen.
+  double height = 0;         // H_c, m above the floor (valid when found).
+  double left_support = 0;   // Fraction of the left junction's visible samples on edges.
+  double right_support = 0;  // Same for the right one.
+  int points = 0;            // Edge pixels whose rays gave the robust (median) estimate.
+  std::string reason;        // Why nothing was found.
+};
+
+// Searches the ceiling height whose two ceiling/wall junctions, (-d_l, h - H_c, Z) and
+// (d_r, h - H_c, Z), best follow the image's edges; then each edge pixel near the chosen lines
+// gives H_c from its ray's intersection with its wall plane, and the median is the estimate.
+// `bgr` is the raw image; the camera's distortion is honoured. Never fails on bad images:
+// estimate->found is false with a reason.
+Status DetectCeiling(const cv::Mat& bgr, const Camera& camera, const CorridorGeometry& geometry,
+                     const CeilingDetectorOptions& options, CeilingEstimate* estimate);
+
+}  // namespace corridor
