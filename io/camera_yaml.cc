@@ -99,13 +99,10 @@ void EmitMatrix(YAML::Emitter* out, const std::string& key, int rows, int cols,
   *out << YAML::EndMap;
 }
 
-}  // namespace
-
-Status ReadCameraYaml(const std::string& path, Camera* camera) {
-  YAML::Node root;
-  Status status = LoadYamlMap(path, &root);
-  if (!status.ok()) return status;
+// Reads the camera from a loaded YAML map; messages name `path`.
+Status CameraFromYaml(const YAML::Node& root, const std::string& path, Camera* camera) {
   const YamlContext ctx{path, ""};
+  Status status;
   Camera c;
   try {
     status = GetYamlInt(root, "image_width", ctx, true, &c.image_width);
@@ -121,6 +118,22 @@ Status ReadCameraYaml(const std::string& path, Camera* camera) {
   if (!c.CheckIntrinsics(&why)) return Status::InvalidArgument(path + ": " + why);
   *camera = c;
   return Status::Ok();
+}
+
+}  // namespace
+
+Status ReadCameraYaml(const std::string& path, Camera* camera) {
+  YAML::Node root;
+  const Status status = LoadYamlMap(path, &root);
+  if (!status.ok()) return status;
+  return CameraFromYaml(root, path, camera);
+}
+
+Status ParseCameraYaml(const std::string& text, const std::string& name, Camera* camera) {
+  YAML::Node root;
+  const Status status = ParseYamlMap(text, name, &root);
+  if (!status.ok()) return status;
+  return CameraFromYaml(root, name, camera);
 }
 
 Status WriteCameraYaml(const std::string& path, const Camera& camera) {

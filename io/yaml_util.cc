@@ -40,8 +40,12 @@ std::string YamlContext::Key(const std::string& key) const {
 
 Status LoadYamlMap(const std::string& path, YAML::Node* root) {
   std::string text;
-  Status status = ReadFileToString(path, &text);
+  const Status status = ReadFileToString(path, &text);
   if (!status.ok()) return status;
+  return ParseYamlMap(text, path, root);
+}
+
+Status ParseYamlMap(const std::string& text, const std::string& path, YAML::Node* root) {
   try {
     *root = YAML::Load(text);
   } catch (const YAML::Exception& e) {

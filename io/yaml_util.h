@@ -14,6 +14,8 @@ namespace corridor {
 // Loads a YAML file whose top level must be a map. Errors name the file; syntax errors carry
 // yaml-cpp's line and column (1-based).
 Status LoadYamlMap(const std::string& path, YAML::Node* root);
+// The same for YAML text already in memory; `path` only names it in messages.
+Status ParseYamlMap(const std::string& text, const std::string& path, YAML::Node* root);
 
 // Where a value comes from, for messages: "<file>: key 'camera_matrix.data[2]' ...".
 struct YamlContext {

@@ -117,6 +117,8 @@ int Main(int argc, char** argv) {
   gflags::SetUsageMessage(
       "corridor_eval --dataset=DIR --output_dir=OUT [--solver=NAME] [--rasterizer=NAME] "
       "[--caps=5,40] [--threads=N] [--compare=solverA:rastA,solverB:rastB]");
+  const Status flags = CheckFlagNames(argc, argv);
+  if (!flags.ok()) return Usage(flags.message());
   gflags::ParseCommandLineFlags(&argc, &argv, true);
   google::InitGoogleLogging(argv[0]);
   if (argc > 1) return Usage(std::string("unexpected argument '") + argv[1] + "'");

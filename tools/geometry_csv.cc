@@ -1,8 +1,35 @@
 #include "tools/geometry_csv.h"
 
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 
 namespace corridor {
+namespace {
+
+constexpr char kHeader[] = "frame,status,yaw,pitch,offset,width,ceiling_height,seconds";
+
+// The first field of a CSV row, unquoted as CsvField quotes it; false when it is malformed.
+bool FirstField(const std::string& row, std::string* field) {
+  field->clear();
+  if (row.empty() || row[0] != '"') {
+    *field = row.substr(0, row.find(','));
+    return !field->empty();
+  }
+  for (size_t i = 1; i < row.size(); ++i) {
+    if (row[i] != '"') {
+      *field += row[i];
+    } else if (i + 1 < row.size() && row[i + 1] == '"') {
+      *field += '"';
+      ++i;
+    } else {
+      return !field->empty() && (i + 1 == row.size() || row[i + 1] == ',');
+    }
+  }
+  return false;  // No closing quote.
+}
+
+}  // namespace
 
 std::string CsvField(const std::string& text) {
   if (text.find_first_of(",\"\n") == std::string::npos) return text;
@@ -33,9 +60,39 @@ void GeometryCsv::AddFailure(const std::string& frame, const Status& status) {
 }
 
 std::string GeometryCsv::Text() const {
-  std::string text = "frame,status,yaw,pitch,offset,width,ceiling_height,seconds\n";
+  std::string text = std::string(kHeader) + "\n";
   for (const auto& row : rows_) text += row + "\n";
   return text;
+}
+
+Status ReadGeometryCsvRows(const std::string& path, std::map<std::string, std::string>* rows) {
+  rows->clear();
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) return Status::NotFound(path + ": no such file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return Status::IoError(path + ": cannot open for reading");
+  std::string line;
+  int number = 0;
+  while (std::getline(in, line)) {
+    ++number;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (number == 1) {
+      if (line != kHeader) {
+        return Status::InvalidArgument(path + ": line 1 is not the geometry.csv header '" +
+                                       std::string(kHeader) + "'");
+      }
+      continue;
+    }
+    if (line.empty()) continue;
+    std::string frame;
+    if (!FirstField(line, &frame)) {
+      return Status::InvalidArgument(path + ": line " + std::to_string(number) +
+                                     " has no frame name");
+    }
+    (*rows)[frame] = line;
+  }
+  if (in.bad()) return Status::IoError(path + ": read failed");
+  return Status::Ok();
 }
 
 }  // namespace corridor

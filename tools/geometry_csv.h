@@ -1,5 +1,6 @@
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -14,7 +15,10 @@ class GeometryCsv {
  public:
   void Add(const std::string& frame, const RecoverDepthResult& result);
   void AddFailure(const std::string& frame, const Status& status);
+  // A row as an earlier run wrote it (without the newline), e.g. from ReadGeometryCsvRows.
+  void AddRow(const std::string& row) { rows_.push_back(row); }
   std::string Text() const;
+  const std::vector<std::string>& rows() const { return rows_; }  // Without newlines.
   int size() const { return static_cast<int>(rows_.size()); }
 
  private:
@@ -23,5 +27,10 @@ class GeometryCsv {
 
 // Quotes a CSV field when it holds a comma, quote or newline.
 std::string CsvField(const std::string& text);
+
+// The rows of an existing geometry.csv by frame name (the first field, unquoted), without their
+// newlines, for resuming a run. NotFound when the file does not exist; InvalidArgument naming the
+// file and line when a row has no frame name or the header is not geometry.csv's.
+Status ReadGeometryCsvRows(const std::string& path, std::map<std::string, std::string>* rows);
 
 }  // namespace corridor

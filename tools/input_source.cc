@@ -3,7 +3,10 @@
 #include <filesystem>
 #include <system_error>
 
+#include <opencv2/core.hpp>
+
 #include "io/camera_yaml.h"
+#include "io/image_io.h"
 
 namespace corridor {
 namespace {
@@ -37,13 +40,16 @@ Status FinishCamera(const CameraOverrides& overrides, const std::string& found,
     if (!status.ok()) return status;
   }
   scene->camera_source = path;
-  if (overrides.camera_height > 0) scene->camera.mount_height = overrides.camera_height;
-  if (scene->camera.mount_height <= 0) {
+  if (overrides.camera_height != 0) scene->camera.mount_height = overrides.camera_height;
+  if (scene->camera.mount_height == 0) {  // Negative or non-finite: Check below names it.
     return Status::InvalidArgument("camera height unknown for " + scene_path +
                                    ": pass --camera_height=M or add camera_height to " + path);
   }
   std::string why;
-  if (!scene->camera.Check(&why)) return Status::InvalidArgument(path + ": " + why);
+  if (!scene->camera.Check(&why)) {  // Names the flag when its height is what is wrong.
+    const bool bad_flag = overrides.camera_height != 0 && scene->camera.CheckIntrinsics(nullptr);
+    return Status::InvalidArgument((bad_flag ? std::string("--camera_height") : path) + ": " + why);
+  }
   return Status::Ok();
 }
 
@@ -108,6 +114,20 @@ Status ResolveInput(const std::string& input, const CameraOverrides& overrides,
   if (!status.ok()) return status;
   scenes->push_back(std::move(scene));
   return Status::Ok();
+}
+
+Status CheckFirstFrameSize(const InputScene& scene) {
+  if (scene.frames.empty()) return Status::Ok();
+  const std::string& path = scene.frames.front().rgb_path;
+  cv::Mat image;
+  if (!ReadColorImage(path, &image).ok()) return Status::Ok();
+  const Camera& camera = scene.camera;
+  if (image.cols == camera.image_width && image.rows == camera.image_height) return Status::Ok();
+  return Status::InvalidArgument(
+      "image " + path + " is " + std::to_string(image.cols) + "x" + std::to_string(image.rows) +
+      " but the calibration " + scene.camera_source + " is for " +
+      std::to_string(camera.image_width) + "x" + std::to_string(camera.image_height) +
+      "; pass the camera of these images with --camera=FILE");
 }
 
 }  // namespace corridor

@@ -12,7 +12,7 @@ namespace corridor {
 // How the tools find the camera when the input does not carry its own.
 struct CameraOverrides {
   std::string camera_file;     // --camera: used for every scene when set.
-  double camera_height = 0.0;  // --camera_height: metres, used when > 0.
+  double camera_height = 0.0;  // --camera_height: metres, used when != 0 (checked).
 };
 
 // One scene of an --input: a dataset scene, a plain folder of images, or a single image.
@@ -30,5 +30,11 @@ struct InputScene {
 // Every failure is an InvalidArgument or NotFound that names the path.
 Status ResolveInput(const std::string& input, const CameraOverrides& overrides,
                     std::vector<InputScene>* scenes);
+
+// Is the calibration for these images? Reads the scene's first frame and compares its size with
+// the camera's: an InvalidArgument naming both files and both sizes when they differ, so that a
+// wrong camera is a configuration error found before any work. A first frame that cannot be read
+// passes here (it fails as a frame in the run), as does a later odd-sized frame.
+Status CheckFirstFrameSize(const InputScene& scene);
 
 }  // namespace corridor

@@ -3,7 +3,7 @@
 DEFINE_string(camera, "", "Camera calibration YAML (ROS camera_info + camera_height); overrides "
                           "<scene>/camera.yaml and <dataset>/camera.yaml");
 DEFINE_double(camera_height, 0.0, "Camera height above the floor, m; overrides the YAML key");
-DEFINE_string(solver, "closed_form+lm",
+DEFINE_string(solver, "joint",
               "Solver: grid, closed_form, lm, or a chain such as closed_form+lm");
 DEFINE_string(rasterizer, "exact", "Depth rasteriser: exact or paper");
 DEFINE_double(max_range, 40.0, "Depth beyond this gets no estimate, m");
@@ -25,6 +25,24 @@ Status RecoverDepthOptionsFromFlags(RecoverDepthOptions* options) {
   options->perception.roi_top_fraction = FLAGS_roi_top;
   std::unique_ptr<DepthRecoverer> probe;
   return DepthRecoverer::Create(*options, &probe);
+}
+
+Status CheckFlagNames(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--") break;
+    if (arg.size() < 2 || arg[0] != '-') continue;  // A positional argument: the tool says so.
+    std::string name = arg.substr(arg[1] == '-' ? 2 : 1);
+    name = name.substr(0, name.find('='));
+    gflags::CommandLineFlagInfo info;
+    if (gflags::GetCommandLineFlagInfo(name.c_str(), &info)) continue;
+    if (name.rfind("no", 0) == 0 && gflags::GetCommandLineFlagInfo(name.c_str() + 2, &info) &&
+        info.type == "bool") {
+      continue;
+    }
+    return Status::InvalidArgument("unknown flag '" + arg + "' (see --help)");
+  }
+  return Status::Ok();
 }
 
 CameraOverrides CameraOverridesFromFlags() {

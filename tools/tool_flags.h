@@ -23,4 +23,9 @@ namespace corridor {
 Status RecoverDepthOptionsFromFlags(RecoverDepthOptions* options);
 CameraOverrides CameraOverridesFromFlags();
 
+// Call before gflags::ParseCommandLineFlags: an unknown flag is bad usage (the tools exit 2), but
+// gflags itself would exit 1 on it. InvalidArgument naming the first unknown flag; "--" ends the
+// flags; "--noNAME" is accepted for a boolean NAME.
+Status CheckFlagNames(int argc, char** argv);
+
 }  // namespace corridor

@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# Builds the whole test suite with AddressSanitizer + UndefinedBehaviorSanitizer
+# (CORRIDOR_SANITIZE, into build-asan/) and runs it with ctest. Any sanitizer report aborts the
+# process, so it fails the test that caused it; the tools the tests start as child processes are
+# sanitized too, and an abort there is a signal the reliability tests reject.
+# Usage: bash scripts/run_sanitized_tests.sh [extra ctest arguments]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+BUILD_DIR=${BUILD_DIR:-build-asan}
+JOBS=${JOBS:-$(nproc)}
+
+export ASAN_OPTIONS=${ASAN_OPTIONS:-abort_on_error=1:detect_leaks=1:strict_string_checks=1}
+export UBSAN_OPTIONS=${UBSAN_OPTIONS:-halt_on_error=1:abort_on_error=1:print_stacktrace=1}
+start=$(date +%s)
+# -O1 keeps the build and the run quick; asserts (Eigen's bounds checks) stay on.
+cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -g1" \
+  -DCORRIDOR_SANITIZE=ON -DCORRIDOR_WERROR=ON -DCORRIDOR_BUILD_BENCHMARKS=OFF >/dev/null
+cmake --build "$BUILD_DIR" -j"$JOBS"
+built=$(date +%s)
+(cd "$BUILD_DIR" && ctest --output-on-failure -j"$JOBS" --timeout 1200 "$@")
+echo "run_sanitized_tests: build $((built - start)) s, tests $(($(date +%s) - built)) s"
