@@ -7,7 +7,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 REPETITIONS=${1:-5}
 shift || true
-bash scripts/build.sh
+bash scripts/build.sh -DCORRIDOR_BUILD_BENCHMARKS=ON
 BUILD_DIR=${BUILD_DIR:-build}
 mkdir -p out/benchmarks
 JSON=out/benchmarks/corridor_benchmarks.json
