@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <mutex>
 #include <sstream>
 
 #include <opencv2/imgproc.hpp>
@@ -13,6 +14,19 @@ namespace corridor {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+// OpenCV 4.6 builds its BGR->Lab tables lazily and without a lock (color_lab.cpp, initLabTabs):
+// two threads converting their first image at once both build them, and one copy leaks (found by
+// LeakSanitizer in corridor_eval --threads=2). Building them once, before any Recover, keeps
+// concurrent Recover calls clean. (Perception converts to Lab: the junction detector's floor
+// appearance.)
+void BuildOpenCvTablesOnce() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    cv::Mat lab;
+    cv::cvtColor(cv::Mat(1, 1, CV_8UC3, cv::Scalar::all(128)), lab, cv::COLOR_BGR2Lab);
+  });
+}
 
 double SecondsSince(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
@@ -147,6 +161,7 @@ Status DepthRecoverer::Create(const RecoverDepthOptions& options,
                               std::unique_ptr<DepthRecoverer>* recoverer) {
   std::string why;
   if (!options.Check(&why)) return Status::InvalidArgument(why);
+  BuildOpenCvTablesOnce();
   std::unique_ptr<CorridorSolver> solver;
   Status status = CreateSolver(options.solver, options.solver_options, &solver);
   if (!status.ok()) return status;

@@ -134,6 +134,5 @@ TEST(BadImages, ToolRecoversSixteenBitAlphaAndGreyCorridors) {
   }
 }
 
-
 }  // namespace
 }  // namespace corridor
