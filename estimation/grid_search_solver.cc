@@ -1,6 +1,9 @@
 #include "estimation/grid_search_solver.h"
 
 #include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <string>
 
 #include "estimation/alternation.h"
 
@@ -25,6 +28,10 @@ class GridStageMinimizer : public StageMinimizer {
                     evaluations);
   }
 
+  // The first parameter found on the edge of its range, if any ("" when none): the true value
+  // may lie outside what the grid covers, so the estimate is not to be trusted.
+  const std::string& edge() const { return edge_; }
+
  private:
   template <typename Functor>
   bool Minimize(const Functor& functor, const GridAxis& a0, const GridAxis& a1, double x[2],
@@ -35,10 +42,20 @@ class GridStageMinimizer : public StageMinimizer {
     };
     *cost = GridMinimize2D(evaluate, a0, a1, options_.refinement_levels,
                            options_.refinement_factor, x, evaluations);
+    const GridAxis* axes[2] = {&a0, &a1};
+    for (int k = 0; k < 2 && edge_.empty(); ++k) {
+      if (std::abs(x[k] - axes[k]->min) < 1e-9 || std::abs(x[k] - axes[k]->max) < 1e-9) {
+        char text[128];
+        std::snprintf(text, sizeof(text), "%g on the edge of [%g, %g]", x[k], axes[k]->min,
+                      axes[k]->max);
+        edge_ = text;
+      }
+    }
     return std::isfinite(*cost);
   }
 
   const GridSearchOptions options_;
+  mutable std::string edge_;  // One minimiser serves one Solve call.
 };
 
 }  // namespace
@@ -48,8 +65,12 @@ Status GridSearchSolver::Solve(const CorridorObservation& observation,
   const auto start = std::chrono::steady_clock::now();
   *summary = SolverSummary();
   summary->solver_name = Name();
-  const Status status =
-      RunAlternation(observation, initial, options_, GridStageMinimizer(options_.grid), summary);
+  const GridStageMinimizer minimizer(options_.grid);
+  Status status = RunAlternation(observation, initial, options_, minimizer, summary);
+  if (status.ok() && !minimizer.edge().empty()) {
+    status = Status::ImplausibleGeometry("grid search: best value " + minimizer.edge() +
+                                         " of its range; the corridor lies outside the grid");
+  }
   summary->seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return status;

@@ -108,10 +108,6 @@ TEST_P(BadGeometryBySolver, ReconstructSaysImplausibleAndGivesNoDepth) {
   std::unique_ptr<DepthRecoverer> recoverer;
   ASSERT_TRUE(DepthRecoverer::Create(options, &recoverer).ok());
   for (const BadGeometry& bad : BadGeometries()) {
-    // Known gap (docs/reliability.md): the grid clips a 0.3 m corridor to its width_min, 0.5 m,
-    // which is also the plausible minimum; the clipped fit is within the plain grid's own
-    // accuracy of the lines, so only the grid itself can tell (an optimum on a range boundary).
-    if (std::string(GetParam()) == "grid" && std::string(bad.name) == "too_narrow") continue;
     RecoverDepthResult result;
     result.junctions = PairFrom(bad.observation);
     const Status status = recoverer->Reconstruct(ObservationCamera(), &result);
