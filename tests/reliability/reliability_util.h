@@ -22,6 +22,7 @@
 
 #include "core/camera.h"
 #include "io/camera_yaml.h"
+#include "tests/io/test_dir.h"  // ReadAll, Contains
 #include "tests/reliability/corridor_image.h"
 
 extern char** environ;
@@ -81,15 +82,6 @@ class ScratchDir {
  private:
   std::filesystem::path root_;
 };
-
-inline std::string ReadAll(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
-inline bool Contains(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
 
 inline bool Exists(const std::string& path) {
   std::error_code ec;
