@@ -13,6 +13,7 @@
 #include <gflags/gflags.h>
 #include <glog/logging.h>
 
+#include "io/camera_yaml.h"
 #include "io/image_io.h"
 #include "pipeline/confidence_mask.h"
 #include "pipeline/floor_mask.h"
@@ -105,6 +106,10 @@ int RunScene(const InputScene& scene, const DepthRecoverer& recoverer, const std
   const std::string csv_path = (scene_dir / "geometry.csv").string();
   std::vector<std::string> kept;
   Status write_error = KeptRows(scene, scene_dir, &kept);
+  // The camera that was used (from a file, or from --fx/--hfov), so that every run records it.
+  if (write_error.ok()) {
+    write_error = WriteCameraYaml((scene_dir / "camera_used.yaml").string(), scene.camera);
+  }
   if (!write_error.ok()) {
     std::fprintf(stderr, "corridor_depth: --skip_existing: %s\n", write_error.ToString().c_str());
     return -1;

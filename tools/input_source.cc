@@ -1,5 +1,6 @@
 #include "tools/input_source.h"
 
+#include <cmath>
 #include <filesystem>
 #include <system_error>
 
@@ -27,13 +28,52 @@ std::string FolderName(const fs::path& dir) {
   return p.filename().string();
 }
 
+// A pinhole from --fx/--fy/--cx/--cy or --hfov, sized by the scene's first image.
+Status CameraFromFlags(const CameraOverrides& o, InputScene* scene) {
+  if (scene->frames.empty()) return Status::InvalidArgument("no image to size the camera by");
+  cv::Mat first;
+  const Status status = ReadColorImage(scene->frames.front().rgb_path, &first);
+  if (!status.ok()) return status;
+  if (o.fx > 0) {
+    scene->camera.image_width = first.cols;
+    scene->camera.image_height = first.rows;
+    scene->camera.fx = o.fx;
+    scene->camera.fy = o.fy > 0 ? o.fy : o.fx;
+    scene->camera.cx = o.cx >= 0 ? o.cx : 0.5 * (first.cols - 1);
+    scene->camera.cy = o.cy >= 0 ? o.cy : 0.5 * (first.rows - 1);
+    scene->camera_source = "--fx/--fy/--cx/--cy";
+  } else {
+    scene->camera = Camera::FromHorizontalFov(first.cols, first.rows, o.hfov_deg * M_PI / 180.0, 0);
+    scene->camera_source = "--hfov";
+  }
+  return Status::Ok();
+}
+
 // Applies the overrides and checks the camera; `found` is the YAML that applies ("" if none).
 Status FinishCamera(const CameraOverrides& overrides, const std::string& found,
                     const std::string& scene_path, InputScene* scene) {
+  const bool pinhole_flags = overrides.camera_file.empty() && overrides.fx > 0;
+  const bool fov_flag = overrides.camera_file.empty() && found.empty() && overrides.hfov_deg > 0;
+  if (pinhole_flags || fov_flag) {
+    if (!(overrides.hfov_deg >= 0 && overrides.hfov_deg < 180)) {
+      return Status::InvalidArgument("--hfov must be in (0, 180) degrees");
+    }
+    Status status = CameraFromFlags(overrides, scene);
+    if (!status.ok()) return status;
+    if (overrides.camera_height != 0) scene->camera.mount_height = overrides.camera_height;
+    if (scene->camera.mount_height == 0) {
+      return Status::InvalidArgument("camera height unknown for " + scene_path + ": pass --camera_height=M");
+    }
+    std::string why;
+    if (!scene->camera.Check(&why)) return Status::InvalidArgument(scene->camera_source + ": " + why);
+    return Status::Ok();
+  }
   const std::string path = overrides.camera_file.empty() ? found : overrides.camera_file;
   if (path.empty()) {
-    return Status::InvalidArgument("no camera calibration for " + scene_path +
-                                   ": pass --camera=FILE or put a camera.yaml beside the images");
+    return Status::InvalidArgument(
+        "no camera calibration for " + scene_path +
+        ": pass --camera=FILE, --fx (with --fy, --cx, --cy) or --hfov=DEG, or put a camera.yaml "
+        "beside the images");
   }
   if (!overrides.camera_file.empty() || scene->camera_source != path) {
     const Status status = ReadCameraYaml(path, &scene->camera);

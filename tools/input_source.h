@@ -13,6 +13,11 @@ namespace corridor {
 struct CameraOverrides {
   std::string camera_file;     // --camera: used for every scene when set.
   double camera_height = 0.0;  // --camera_height: metres, used when != 0 (checked).
+  double fx = 0.0;             // --fx: with --fy, --cx, --cy, a pinhole on the command line (0 = none).
+  double fy = 0.0;             // --fy, pixels (0 = same as --fx).
+  double cx = -1.0;            // --cx, pixels (< 0 = image centre).
+  double cy = -1.0;            // --cy, pixels (< 0 = image centre).
+  double hfov_deg = 0.0;       // --hfov: pinhole from a horizontal field of view, for images without calibration (0 = none).
 };
 
 // One scene of an --input: a dataset scene, a plain folder of images, or a single image.
@@ -24,9 +29,10 @@ struct InputScene {
 };
 
 // Resolves --input (an image file, a folder of images, or a dataset root in the foundation
-// layout) into scenes with their cameras: --camera if given, else <scene>/camera.yaml, else
-// <dataset>/camera.yaml (for a single image or a plain folder: camera.yaml beside the images,
-// then in the parent folder). The height is --camera_height if given, else the camera_height key.
+// layout) into scenes with their cameras: --camera if given, else --fx/--fy/--cx/--cy, else
+// <scene>/camera.yaml, else <dataset>/camera.yaml (for a single image or a plain folder:
+// camera.yaml beside the images, then in the parent folder), else --hfov; the pinholes from flags
+// take the size of the scene's first image. The height is --camera_height if given, else the camera_height key.
 // Every failure is an InvalidArgument or NotFound that names the path.
 Status ResolveInput(const std::string& input, const CameraOverrides& overrides,
                     std::vector<InputScene>* scenes);

@@ -2,6 +2,13 @@
 
 DEFINE_string(camera, "", "Camera calibration YAML (ROS camera_info + camera_height); overrides "
                           "<scene>/camera.yaml and <dataset>/camera.yaml");
+DEFINE_double(fx, 0.0, "Uncalibrated mode: focal length x, px (with --fy, --cx, --cy; no file)");
+DEFINE_double(fy, 0.0, "Uncalibrated mode: focal length y, px (0 = --fx)");
+DEFINE_double(cx, -1.0, "Uncalibrated mode: principal point x, px (< 0 = image centre)");
+DEFINE_double(cy, -1.0, "Uncalibrated mode: principal point y, px (< 0 = image centre)");
+DEFINE_double(hfov, 0.0,
+              "Uncalibrated mode: horizontal field of view, degrees, for images without a "
+              "calibration file (principal point at the centre)");
 DEFINE_double(camera_height, 0.0, "Camera height above the floor, m; overrides the YAML key");
 DEFINE_string(solver, "joint",
               "Solver: grid, closed_form, lm, or a chain such as closed_form+lm");
@@ -49,6 +56,11 @@ CameraOverrides CameraOverridesFromFlags() {
   CameraOverrides overrides;
   overrides.camera_file = FLAGS_camera;
   overrides.camera_height = FLAGS_camera_height;
+  overrides.fx = FLAGS_fx;
+  overrides.fy = FLAGS_fy;
+  overrides.cx = FLAGS_cx;
+  overrides.cy = FLAGS_cy;
+  overrides.hfov_deg = FLAGS_hfov;
   return overrides;
 }
 

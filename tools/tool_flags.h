@@ -9,6 +9,11 @@
 // The flags every tool that recovers depth takes (corridor_depth, corridor_eval, ...).
 DECLARE_string(camera);
 DECLARE_double(camera_height);
+DECLARE_double(fx);
+DECLARE_double(fy);
+DECLARE_double(cx);
+DECLARE_double(cy);
+DECLARE_double(hfov);
 DECLARE_string(solver);
 DECLARE_string(rasterizer);
 DECLARE_double(max_range);
