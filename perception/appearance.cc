@@ -7,14 +7,6 @@
 namespace corridor {
 namespace {
 
-float Distance(const cv::Vec3f& a, const cv::Vec3f& b) {
-  const cv::Vec3f d = a - b;
-  // Lightness counts half: shading and light falloff change it along a uniform floor.
-  // Lightness counts half (shading and light falloff change it along a uniform floor); 8-bit L
-  // is scaled by 255/100, hence 0.25 * (100/255)^2.
-  return std::sqrt(0.0385f * d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-}
-
 float Median(std::vector<float>* values) {
   if (values->empty()) return 0.0f;
   auto mid = values->begin() + values->size() / 2;
@@ -23,6 +15,12 @@ float Median(std::vector<float>* values) {
 }
 
 }  // namespace
+
+float LabDistance(const cv::Vec3f& a, const cv::Vec3f& b) {
+  const cv::Vec3f d = a - b;
+  // 8-bit L is scaled by 255/100, hence 0.25 * (100/255)^2 for a quarter weight on lightness.
+  return std::sqrt(0.0385f * d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+}
 
 FloorAppearance SampleFloor(const cv::Mat& lab, int roi_top) {
   const int rows = lab.rows, cols = lab.cols;
@@ -42,7 +40,7 @@ FloorAppearance SampleFloor(const cv::Mat& lab, int roi_top) {
   FloorAppearance floor;
   for (int c = 0; c < 3; ++c) floor.lab[c] = Median(&channel[c]);
   std::vector<float> distances;
-  for (const auto& p : pixels) distances.push_back(Distance(p, floor.lab));
+  for (const auto& p : pixels) distances.push_back(LabDistance(p, floor.lab));
   floor.spread = std::max(1.0f, Median(&distances));
   return floor;
 }
@@ -57,7 +55,7 @@ double BoundaryScore(const cv::Mat& lab, const FloorAppearance& floor, const Mer
   // has baseboard below; a grout line or a reflection has floor on both sides.)
   const double sigma = std::max(6.0, 3.0 * floor.spread);
   const auto likeness = [&](const cv::Vec3f& c) {
-    const double d = Distance(c, floor.lab);
+    const double d = LabDistance(c, floor.lab);
     return std::exp(-d * d / (2 * sigma * sigma));
   };
   double sum = 0;

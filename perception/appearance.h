@@ -13,6 +13,10 @@ struct FloorAppearance {
   float spread = 1;   // Median distance of the patch's pixels to it (texture), >= 1.
 };
 
+// Distance of two 8-bit Lab colours (OpenCV's scaling) with lightness weighted a quarter: shading,
+// light falloff and grazing angles change lightness along a uniform surface.
+float LabDistance(const cv::Vec3f& a, const cv::Vec3f& b);
+
 // `lab`: the ROI rows [roi_top, image rows) of the image in 8-bit Lab (CV_8UC3).
 FloorAppearance SampleFloor(const cv::Mat& lab, int roi_top);
 

@@ -7,6 +7,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "core/corridor_frame.h"
+#include "perception/appearance.h"
 
 namespace corridor {
 namespace {
@@ -43,12 +44,6 @@ cv::Mat SurfaceLabels(const Camera& camera, const CorridorGeometry& g) {
   return floor;
 }
 
-// Lab distance with lightness weighted by `l_weight` (8-bit L is scaled by 255/100).
-float Distance(const cv::Vec3b& a, const cv::Vec3f& b, float l_weight) {
-  const float dl = a[0] - b[0], da = a[1] - b[1], db = a[2] - b[2];
-  return std::sqrt(0.1538f * l_weight * dl * dl + da * da + db * db);
-}
-
 }  // namespace
 
 cv::Mat ComputeConfidenceMask(const cv::Mat& bgr, const cv::Mat& depth, const Camera& camera,
@@ -63,8 +58,6 @@ cv::Mat ComputeConfidenceMask(const cv::Mat& bgr, const cv::Mat& depth, const Ca
   cv::medianBlur(bgr, smooth, 5);
   cv::cvtColor(smooth, lab, cv::COLOR_BGR2Lab);
   for (const uchar surface : {kFloor, kWall}) {
-    // Light falloff and grazing angles change lightness with distance, so it counts a quarter.
-    const float l_weight = 0.25f;
     std::vector<float> channel[3];
     for (int v = 0; v < lab.rows; v += 2) {
       for (int u = 0; u < lab.cols; u += 2) {
@@ -84,7 +77,7 @@ cv::Mat ComputeConfidenceMask(const cv::Mat& bgr, const cv::Mat& depth, const Ca
     for (int v = 0; v < lab.rows; v += 2) {
       for (int u = 0; u < lab.cols; u += 2) {
         if (labels.at<uchar>(v, u) == surface) {
-          distances.push_back(Distance(lab.at<cv::Vec3b>(v, u), reference, l_weight));
+          distances.push_back(LabDistance(lab.at<cv::Vec3b>(v, u), reference));
         }
       }
     }
@@ -97,7 +90,7 @@ cv::Mat ComputeConfidenceMask(const cv::Mat& bgr, const cv::Mat& depth, const Ca
     for (int v = 0; v < lab.rows; ++v) {
       for (int u = 0; u < lab.cols; ++u) {
         if (labels.at<uchar>(v, u) == surface &&
-            Distance(lab.at<cv::Vec3b>(v, u), reference, l_weight) > threshold) {
+            LabDistance(lab.at<cv::Vec3b>(v, u), reference) > threshold) {
           odd.at<uchar>(v, u) = 255;
         }
       }
