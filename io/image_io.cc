@@ -141,15 +141,7 @@ Status ReadDepthPng(const std::string& path, cv::Mat* depth_m) {
   return Status::Ok();
 }
 
-Status WriteDepthPng(const std::string& path, const cv::Mat& depth_m) {
-  if (depth_m.empty()) return Status::InvalidArgument(path + ": depth image to write is empty");
-  if (depth_m.type() != CV_32FC1) {
-    return Status::InvalidArgument(path + ": depth to write must be 32FC1 metres, but it is " +
-                                   cv::typeToString(depth_m.type()));
-  }
-  if (LowerExtension(path) != ".png") {
-    return Status::InvalidArgument(path + ": depth images must be written as .png");
-  }
+cv::Mat DepthToMillimetres(const cv::Mat& depth_m) {
   cv::Mat mm(depth_m.size(), CV_16UC1);
   for (int r = 0; r < depth_m.rows; ++r) {
     const float* src = depth_m.ptr<float>(r);
@@ -161,7 +153,19 @@ Status WriteDepthPng(const std::string& path, const cv::Mat& depth_m) {
       dst[c] = static_cast<uint16_t>(rounded > 65535.0 ? 65535.0 : rounded);
     }
   }
-  return WriteImageAtomic(path, mm);
+  return mm;
+}
+
+Status WriteDepthPng(const std::string& path, const cv::Mat& depth_m) {
+  if (depth_m.empty()) return Status::InvalidArgument(path + ": depth image to write is empty");
+  if (depth_m.type() != CV_32FC1) {
+    return Status::InvalidArgument(path + ": depth to write must be 32FC1 metres, but it is " +
+                                   cv::typeToString(depth_m.type()));
+  }
+  if (LowerExtension(path) != ".png") {
+    return Status::InvalidArgument(path + ": depth images must be written as .png");
+  }
+  return WriteImageAtomic(path, DepthToMillimetres(depth_m));
 }
 
 Status WriteImageAtomic(const std::string& path, const cv::Mat& image) {

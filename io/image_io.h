@@ -15,6 +15,9 @@ Status ReadColorImage(const std::string& path, cv::Mat* bgr);
 // Reads a 16-bit millimetre depth PNG into CV_32F metres (0 = invalid).
 Status ReadDepthPng(const std::string& path, cv::Mat* depth_m);
 
+// CV_32F metres -> CV_16U millimetres: rounded; 0, negative and non-finite -> 0; clamped to 65535.
+cv::Mat DepthToMillimetres(const cv::Mat& depth_m);
+
 // Writes CV_32F metres as a 16-bit millimetre PNG (rounded; 0 and non-finite -> 0; clamped to
 // 65535). Atomic.
 Status WriteDepthPng(const std::string& path, const cv::Mat& depth_m);

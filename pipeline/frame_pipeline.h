@@ -13,6 +13,7 @@ namespace corridor {
 struct PipelineFrame {
   int64_t index = 0;            // Position in the input order (set by the pipeline).
   std::string name;             // The frame's name, for outputs and messages.
+  int64_t stamp_ns = -1;        // Capture time, ns since the epoch (a ROS bag message's); -1 = none.
   const Camera* camera = nullptr;  // Its camera; must outlive the run.
   cv::Mat image;                // The image; may be empty when reading failed.
   Status read_status;           // Why the image could not be read (the frame then fails).

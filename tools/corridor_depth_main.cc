@@ -1,25 +1,34 @@
 // corridor_depth: dense metric depth from corridor images.
 //   corridor_depth --input=PATH --output_dir=DIR [--camera=FILE] [--camera_height=M]
 //                  [--solver=NAME] [--rasterizer=NAME] [--skip_existing]
-// PATH is an image, a folder of images, or a dataset root. Writes, per scene,
-// DIR/<scene>/depth/<frame>.png (16-bit mm, 0 = none), DIR/<scene>/vis/<frame>.png and
-// DIR/<scene>/geometry.csv. Exit code 0: all frames ok; 1: some frames failed; 2: bad usage or
-// configuration (also a camera whose size is not the first image's).
+//                  [--image_topic=T] [--camera_info_topic=T] [--write_cloud] [--output_bag=FILE]
+// PATH is an image, a folder of images, a dataset root, a ROS 1 bag or a video. Writes, per
+// scene, DIR/<scene>/depth/<frame>.png (16-bit mm, 0 = none), DIR/<scene>/vis/<frame>.png and
+// DIR/<scene>/geometry.csv; bag frames are named <sec>.<nsec>, video frames by their index.
+// Exit code 0: all frames ok; 1: some frames failed; 2: bad usage or configuration (also a camera
+// whose size is not the first image's, a bag topic that is not there, an unsupported encoding).
 
 #include <cstdio>
 #include <filesystem>
 #include <map>
+#include <mutex>
 
 #include <gflags/gflags.h>
 #include <glog/logging.h>
 
+#include "depth/point_cloud.h"
 #include "io/camera_yaml.h"
 #include "io/image_io.h"
+#include "io/ply_io.h"
+#ifdef CORRIDOR_HAVE_ROSBAG
+#include "io/rosbag_io.h"
+#endif
 #include "pipeline/confidence_mask.h"
 #include "pipeline/floor_mask.h"
 #include "pipeline/frame_pipeline.h"
 #include "pipeline/recover_depth.h"
 #include "pipeline/visualization.h"
+#include "tools/frame_source.h"
 #include "tools/geometry_csv.h"
 #include "tools/input_source.h"
 #include "tools/progress.h"
@@ -35,6 +44,16 @@ DEFINE_bool(write_confidence, false,
             "Write DIR/<scene>/confidence/<frame>.png: 255 where the box model explains the image");
 DEFINE_bool(skip_existing, false,
             "Resume: skip frames whose depth PNG and geometry.csv row are already in the output");
+DEFINE_string(image_topic, "",
+              "ROS bag input: the sensor_msgs/Image or CompressedImage topic (default: the only one)");
+DEFINE_string(camera_info_topic, "",
+              "ROS bag input: the CameraInfo topic (default: camera_info beside the image topic)");
+DEFINE_bool(write_cloud, false,
+            "Write DIR/<scene>/cloud/<frame>.ply: binary PLY, x y z (camera frame, m) + colour");
+DEFINE_string(output_bag, "",
+              "Write the depth maps to this ROS 1 bag: 16UC1 mm on <image_topic>/corridor_depth "
+              "plus CameraInfo on <image_topic>/corridor_depth/camera_info, at the input stamps "
+              "(frames without a stamp: 1 s + index x frame period)");
 
 namespace corridor {
 namespace {
@@ -46,18 +65,32 @@ int Usage(const std::string& message) {
   return 2;
 }
 
-// Writes one frame's outputs and its geometry row.
-Status WriteFrame(const fs::path& scene_dir, const PipelineFrame& frame, GeometryCsv* csv) {
+// The "<sec>.<nsec>" of a stamped frame, "" otherwise.
+std::string StampText(const PipelineFrame& frame) {
+#ifdef CORRIDOR_HAVE_ROSBAG
+  if (frame.stamp_ns >= 0) return BagStamp::FromNanoseconds(frame.stamp_ns).ToString();
+#endif
+  (void)frame;
+  return "";
+}
+
+// Writes one frame's outputs and its geometry row; `rays` is set with --write_cloud.
+Status WriteFrame(const fs::path& scene_dir, const PipelineFrame& frame, const RayTable* rays,
+                  GeometryCsv* csv) {
   const RecoverDepthResult& result = frame.result;
-  if (result.has_geometry) {
-    csv->Add(frame.name, result);
-  } else {
-    csv->AddFailure(frame.name, result.status);
-  }
+  csv->Add(frame.name, result, StampText(frame));
   if (!result.depth.empty()) {
     const Status status =
         WriteDepthPng((scene_dir / "depth" / (frame.name + ".png")).string(), result.depth);
     if (!status.ok()) return status;
+    if (rays != nullptr) {
+      PointCloud cloud;
+      Status built = DepthToPointCloud(*rays, result.depth, frame.image, &cloud);
+      if (built.ok()) {
+        built = WritePlyAtomic((scene_dir / "cloud" / (frame.name + ".ply")).string(), cloud);
+      }
+      if (!built.ok()) return built;
+    }
     if (FLAGS_write_floor_mask) {
       const Status written =
           WriteImageAtomic((scene_dir / "floor" / (frame.name + ".png")).string(),
@@ -78,35 +111,59 @@ Status WriteFrame(const fs::path& scene_dir, const PipelineFrame& frame, Geometr
   return Status::Ok();
 }
 
-// --skip_existing: the geometry.csv rows of the frames whose depth PNG an earlier run wrote, by
-// scene order (empty = compute the frame). A frame without its row is computed again.
-Status KeptRows(const InputScene& scene, const fs::path& scene_dir,
-                std::vector<std::string>* kept) {
-  kept->assign(scene.frames.size(), "");
+// --skip_existing: the geometry.csv rows, by frame name, of the frames whose depth PNG an earlier
+// run wrote (empty = compute every frame). A frame without its row is computed again.
+Status KeptRows(const fs::path& scene_dir, std::map<std::string, std::string>* kept) {
+  kept->clear();
   if (!FLAGS_skip_existing) return Status::Ok();
   std::map<std::string, std::string> rows;
   const Status status = ReadGeometryCsvRows((scene_dir / "geometry.csv").string(), &rows);
   if (status.code() == StatusCode::kNotFound) return Status::Ok();
   if (!status.ok()) return status;
-  for (size_t i = 0; i < scene.frames.size(); ++i) {
-    const auto row = rows.find(scene.frames[i].name);
+  for (auto& [name, row] : rows) {
     std::error_code ec;
-    if (row != rows.end() && fs::exists(scene_dir / "depth" / (row->first + ".png"), ec)) {
-      (*kept)[i] = row->second;
-    }
+    if (fs::exists(scene_dir / "depth" / (name + ".png"), ec)) (*kept)[name] = std::move(row);
   }
   return Status::Ok();
 }
 
+// --output_bag: where a scene's depth goes in the bag.
+struct BagOutput {
+#ifdef CORRIDOR_HAVE_ROSBAG
+  BagDepthWriter* writer = nullptr;  // The open output bag; null without --output_bag.
+#endif
+  std::string depth_topic;  // <image topic>/corridor_depth.
+  std::string info_topic;   // <depth topic>/camera_info.
+  std::string frame_id;     // The input's CameraInfo frame_id, else "camera".
+};
+
+// Writes one frame's depth to the output bag, at its stamp or at 1 s + position x frame period.
+Status WriteToBag(const BagOutput& bag, const InputScene& scene, const PipelineFrame& frame,
+                  size_t position) {
+#ifdef CORRIDOR_HAVE_ROSBAG
+  if (bag.writer == nullptr || frame.result.depth.empty()) return Status::Ok();
+  const int64_t ns = frame.stamp_ns >= 0
+                         ? frame.stamp_ns
+                         : 1000000000LL + static_cast<int64_t>(std::llround(
+                                              1e9 * scene.frame_period * static_cast<double>(position)));
+  return bag.writer->Write(bag.depth_topic, bag.info_topic, BagStamp::FromNanoseconds(ns),
+                           bag.frame_id, frame.result.depth, *frame.camera);
+#else
+  (void)bag, (void)scene, (void)frame, (void)position;
+  return Status::Ok();
+#endif
+}
+
 // Processes one scene through the two-thread pipeline; returns the number of failed frames, or
-// -1 when an output cannot be written (which stops the run: nothing more could be saved).
+// -1 when the input cannot be opened or an output cannot be written (which stops the run:
+// nothing more could be saved). *frames counts the scene's frames, *skipped the kept ones.
 int RunScene(const InputScene& scene, const DepthRecoverer& recoverer, const std::string& out,
-             int* skipped) {
+             const BagOutput& bag, int* frames, int* skipped) {
   const fs::path scene_dir = fs::path(out) / scene.name;
   const std::string csv_path = (scene_dir / "geometry.csv").string();
-  std::vector<std::string> kept;
-  Status write_error = KeptRows(scene, scene_dir, &kept);
-  // The camera that was used (from a file, or from --fx/--hfov), so that every run records it.
+  std::map<std::string, std::string> kept;
+  Status write_error = KeptRows(scene_dir, &kept);
+  // The camera that was used (from a file, a bag, or --fx/--hfov), so that every run records it.
   if (write_error.ok()) {
     write_error = WriteCameraYaml((scene_dir / "camera_used.yaml").string(), scene.camera);
   }
@@ -114,15 +171,25 @@ int RunScene(const InputScene& scene, const DepthRecoverer& recoverer, const std
     std::fprintf(stderr, "corridor_depth: --skip_existing: %s\n", write_error.ToString().c_str());
     return -1;
   }
-  std::vector<size_t> todo;  // The frames to compute, by index into scene.frames.
-  for (size_t i = 0; i < kept.size(); ++i) {
-    if (kept[i].empty()) todo.push_back(i);
+  std::unique_ptr<FrameSource> input;
+  const Status opened = OpenFrameSource(scene, &input);
+  if (!opened.ok()) {
+    std::fprintf(stderr, "corridor_depth: %s\n", opened.ToString().c_str());
+    return -1;
   }
-  *skipped = static_cast<int>(scene.frames.size() - todo.size());
-  const int total = static_cast<int>(todo.size());
-  std::vector<std::string> rows = kept;  // geometry.csv rows in scene order; "" = none yet.
+  std::unique_ptr<RayTable> rays;
+  if (FLAGS_write_cloud) rays = std::make_unique<RayTable>(scene.camera);
+  const int64_t known = scene.kind == InputKind::kImages
+                            ? static_cast<int64_t>(scene.frames.size()) : scene.frame_count;
+  const int total = static_cast<int>(std::max<int64_t>(0, known - static_cast<int64_t>(kept.size())));
+  // geometry.csv rows in input order ("" = not done yet), and each computed frame's position in
+  // it; the source (extraction thread) appends, the sink (this thread) fills.
+  std::mutex mutex;
+  std::vector<std::string> rows;
+  std::vector<size_t> position_of;
   const auto write_csv = [&]() {
     GeometryCsv csv;
+    std::lock_guard<std::mutex> lock(mutex);
     for (const auto& row : rows) {
       if (!row.empty()) csv.AddRow(row);
     }
@@ -130,53 +197,87 @@ int RunScene(const InputScene& scene, const DepthRecoverer& recoverer, const std
   };
   Progress progress(scene.name, total);
   int failed = 0;
-  size_t next = 0;
   const auto source = [&](PipelineFrame* frame) {
-    if (next >= todo.size()) return false;
-    const DatasetFrame& input = scene.frames[todo[next++]];
-    frame->name = input.name;
-    frame->camera = &scene.camera;
-    frame->read_status = ReadColorImage(input.rgb_path, &frame->image);
-    return true;
+    for (;;) {
+      PipelineFrame next;
+      if (!input->Next(&next)) return false;
+      std::lock_guard<std::mutex> lock(mutex);
+      const auto row = kept.find(next.name);
+      if (row != kept.end()) {
+        rows.push_back(row->second);
+        ++*skipped;
+        continue;
+      }
+      position_of.push_back(rows.size());
+      rows.emplace_back();
+      next.camera = &scene.camera;
+      *frame = std::move(next);
+      return true;
+    }
   };
   const auto sink = [&](PipelineFrame&& frame) {
-    const size_t index = todo[frame.index];
+    size_t position;
+    {
+      std::lock_guard<std::mutex> lock(mutex);
+      position = position_of[static_cast<size_t>(frame.index)];
+    }
     if (!frame.result.status.ok()) {
       ++failed;
-      std::fprintf(stderr, "%sframe %s failed: %s\n", total > 1 ? "\n" : "",
-                   scene.frames[index].rgb_path.c_str(), frame.result.status.ToString().c_str());
+      const std::string where = scene.kind == InputKind::kImages
+                                    ? scene.frames[position].rgb_path
+                                    : scene.stream_path + " frame " + frame.name;
+      std::fprintf(stderr, "%sframe %s failed: %s\n", total > 1 ? "\n" : "", where.c_str(),
+                   frame.result.status.ToString().c_str());
     }
     GeometryCsv row;
-    write_error = WriteFrame(scene_dir, frame, &row);
-    rows[index] = row.rows().front();
-    const bool last = frame.index + 1 == total;
-    if (write_error.ok() && (last || (frame.index + 1) % 50 == 0)) write_error = write_csv();
+    write_error = WriteFrame(scene_dir, frame, rays.get(), &row);
+    if (write_error.ok()) write_error = WriteToBag(bag, scene, frame, position);
+    {
+      std::lock_guard<std::mutex> lock(mutex);
+      rows[position] = row.rows().front();
+    }
+    if (write_error.ok() && (frame.index + 1) % 50 == 0) write_error = write_csv();
     progress.Tick(static_cast<int>(frame.index + 1));
     return write_error.ok();
   };
-  FramePipeline(recoverer).Run(source, sink);
+  const int64_t computed = FramePipeline(recoverer).Run(source, sink);
   progress.Finish();
-  if (total == 0) write_error = write_csv();  // Every frame was kept: the CSV as it was.
+  if (write_error.ok()) write_error = write_csv();  // Every row, the kept ones included.
   if (!write_error.ok()) {
     std::fprintf(stderr, "corridor_depth: cannot write output: %s\n",
                  write_error.ToString().c_str());
     return -1;
   }
+  *frames = static_cast<int>(computed) + *skipped;
   return failed;
 }
 
 int Main(int argc, char** argv) {
   gflags::SetUsageMessage(
       "corridor_depth --input=PATH --output_dir=DIR [--camera=FILE] [--camera_height=M] "
-      "[--solver=NAME] [--rasterizer=NAME] [--skip_existing]");
+      "[--solver=NAME] [--rasterizer=NAME] [--skip_existing] [--image_topic=T] "
+      "[--camera_info_topic=T] [--write_cloud] [--output_bag=FILE]\n"
+      "--input is an image, a folder of images, a dataset root, a ROS 1 bag or a video");
   const Status flags = CheckFlagNames(argc, argv);
   if (!flags.ok()) return Usage(flags.message());
   gflags::ParseCommandLineFlags(&argc, &argv, true);
   google::InitGoogleLogging(argv[0]);
   if (argc > 1) return Usage(std::string("unexpected argument '") + argv[1] + "'");
-  if (FLAGS_input.empty()) return Usage("--input is required (an image, a folder or a dataset)");
+  if (FLAGS_input.empty()) {
+    return Usage("--input is required (an image, a folder, a dataset, a ROS bag or a video)");
+  }
   if (FLAGS_output_dir.empty()) return Usage("--output_dir is required");
   if (!(FLAGS_vis_max_depth > 0)) return Usage("--vis_max_depth must be positive");
+  if (!FLAGS_output_bag.empty() && FLAGS_skip_existing) {
+    return Usage("--output_bag and --skip_existing do not go together: the kept frames would be "
+                 "missing from the new bag");
+  }
+#ifndef CORRIDOR_HAVE_ROSBAG
+  if (!FLAGS_output_bag.empty()) {
+    return Usage("--output_bag: this build has no ROS bag support (configure with "
+                 "-DCORRIDOR_WITH_ROSBAG=ON)");
+  }
+#endif
 
   RecoverDepthOptions options;
   Status status = RecoverDepthOptionsFromFlags(&options);
@@ -185,26 +286,56 @@ int Main(int argc, char** argv) {
   status = DepthRecoverer::Create(options, &recoverer);
   if (!status.ok()) return Usage(status.message());
   std::vector<InputScene> scenes;
-  status = ResolveInput(FLAGS_input, CameraOverridesFromFlags(), &scenes);
+  BagTopicOptions topics;
+  topics.image_topic = FLAGS_image_topic;
+  topics.camera_info_topic = FLAGS_camera_info_topic;
+  status = ResolveInput(FLAGS_input, CameraOverridesFromFlags(), &scenes, topics);
   if (!status.ok()) return Usage(status.message());
   for (const auto& scene : scenes) {
     status = CheckFirstFrameSize(scene);
     if (!status.ok()) return Usage(status.message());
   }
 
+#ifdef CORRIDOR_HAVE_ROSBAG
+  std::unique_ptr<BagDepthWriter> bag_writer;
+  if (!FLAGS_output_bag.empty()) {
+    status = BagDepthWriter::Open(FLAGS_output_bag, &bag_writer);
+    if (!status.ok()) return Usage(status.message());
+  }
+#endif
   int failed = 0, total = 0, skipped = 0;
   for (const auto& scene : scenes) {
-    int scene_skipped = 0;
-    const int scene_failed = RunScene(scene, *recoverer, FLAGS_output_dir, &scene_skipped);
+    BagOutput bag;
+#ifdef CORRIDOR_HAVE_ROSBAG
+    bag.writer = bag_writer.get();
+#endif
+    const std::string base = scene.image_topic.empty() ? "/" + scene.name + "/image"
+                                                       : scene.image_topic;
+    bag.depth_topic = base + "/corridor_depth";
+    bag.info_topic = bag.depth_topic + "/camera_info";
+    bag.frame_id = scene.frame_id.empty() ? "camera" : scene.frame_id;
+    int scene_frames = 0, scene_skipped = 0;
+    const int scene_failed =
+        RunScene(scene, *recoverer, FLAGS_output_dir, bag, &scene_frames, &scene_skipped);
     if (scene_failed < 0) return 2;
     failed += scene_failed;
     skipped += scene_skipped;
-    total += static_cast<int>(scene.frames.size());
+    total += scene_frames;
   }
+#ifdef CORRIDOR_HAVE_ROSBAG
+  if (bag_writer) {
+    status = bag_writer->Close();
+    if (!status.ok()) {
+      std::fprintf(stderr, "corridor_depth: %s\n", status.ToString().c_str());
+      return 2;
+    }
+  }
+#endif
   std::printf("corridor_depth: %d of %d frames ok, %d of them kept from an earlier run "
-              "(solver %s, rasterizer %s); outputs in %s\n",
+              "(solver %s, rasterizer %s); outputs in %s%s%s\n",
               total - failed, total, skipped, options.solver.c_str(), options.rasterizer.c_str(),
-              FLAGS_output_dir.c_str());
+              FLAGS_output_dir.c_str(), FLAGS_output_bag.empty() ? "" : ", depth bag ",
+              FLAGS_output_bag.c_str());
   return failed > 0 ? 1 : 0;
 }
 

@@ -7,7 +7,7 @@
 namespace corridor {
 namespace {
 
-constexpr char kHeader[] = "frame,status,yaw,pitch,offset,width,ceiling_height,seconds";
+constexpr char kHeader[] = "frame,status,yaw,pitch,offset,width,ceiling_height,seconds,stamp";
 
 // The first field of a CSV row, unquoted as CsvField quotes it; false when it is malformed.
 bool FirstField(const std::string& row, std::string* field) {
@@ -41,9 +41,10 @@ std::string CsvField(const std::string& text) {
   return quoted + "\"";
 }
 
-void GeometryCsv::Add(const std::string& frame, const RecoverDepthResult& result) {
+void GeometryCsv::Add(const std::string& frame, const RecoverDepthResult& result,
+                      const std::string& stamp) {
   if (!result.has_geometry) {
-    AddFailure(frame, result.status);
+    AddFailure(frame, result.status, stamp);
     return;
   }
   const CorridorGeometry& g = result.geometry;
@@ -52,11 +53,14 @@ void GeometryCsv::Add(const std::string& frame, const RecoverDepthResult& result
                 g.width, g.HasCeiling() ? std::to_string(g.ceiling_height).c_str() : "",
                 result.times.total);
   rows_.push_back(CsvField(frame) + "," +
-                  CsvField(result.status.ok() ? "ok" : result.status.ToString()) + "," + numbers);
+                  CsvField(result.status.ok() ? "ok" : result.status.ToString()) + "," + numbers +
+                  "," + CsvField(stamp));
 }
 
-void GeometryCsv::AddFailure(const std::string& frame, const Status& status) {
-  rows_.push_back(CsvField(frame) + "," + CsvField(status.ToString()) + ",,,,,,");
+void GeometryCsv::AddFailure(const std::string& frame, const Status& status,
+                            const std::string& stamp) {
+  rows_.push_back(CsvField(frame) + "," + CsvField(status.ToString()) + ",,,,,," + "," +
+                  CsvField(stamp));
 }
 
 std::string GeometryCsv::Text() const {

@@ -8,13 +8,14 @@
 
 namespace corridor {
 
-// geometry.csv: a header row, then `frame,status,yaw,pitch,offset,width,ceiling_height,seconds`
-// per frame; radians and metres with the signs of geometry.md; status "ok" or the error; an
-// unknown value is empty.
+// geometry.csv: a header row, then `frame,status,yaw,pitch,offset,width,ceiling_height,seconds,
+// stamp` per frame; radians and metres with the signs of geometry.md; status "ok" or the error;
+// stamp "<sec>.<nsec>" for a ROS bag message; an unknown value is empty.
 class GeometryCsv {
  public:
-  void Add(const std::string& frame, const RecoverDepthResult& result);
-  void AddFailure(const std::string& frame, const Status& status);
+  void Add(const std::string& frame, const RecoverDepthResult& result,
+           const std::string& stamp = "");
+  void AddFailure(const std::string& frame, const Status& status, const std::string& stamp = "");
   // A row as an earlier run wrote it (without the newline), e.g. from ReadGeometryCsvRows.
   void AddRow(const std::string& row) { rows_.push_back(row); }
   std::string Text() const;

@@ -1,18 +1,33 @@
 #include "tools/input_source.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <system_error>
 
 #include <opencv2/core.hpp>
+#include <opencv2/videoio.hpp>
 
 #include "io/camera_yaml.h"
 #include "io/image_io.h"
+#ifdef CORRIDOR_HAVE_ROSBAG
+#include "io/rosbag_io.h"
+#endif
+#include "tools/frame_source.h"
 
 namespace corridor {
 namespace {
 
 namespace fs = std::filesystem;
+
+// The extension with its dot, lower-cased: "a/B.BAG" -> ".bag".
+std::string LowerExtension(const std::string& path) {
+  std::string ext = fs::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
+}
 
 bool Exists(const fs::path& p) {
   std::error_code ec;
@@ -30,9 +45,11 @@ std::string FolderName(const fs::path& dir) {
 
 // A pinhole from --fx/--fy/--cx/--cy or --hfov, sized by the scene's first image.
 Status CameraFromFlags(const CameraOverrides& o, InputScene* scene) {
-  if (scene->frames.empty()) return Status::InvalidArgument("no image to size the camera by");
+  if (scene->kind == InputKind::kImages && scene->frames.empty()) {
+    return Status::InvalidArgument("no image to size the camera by");
+  }
   cv::Mat first;
-  const Status status = ReadColorImage(scene->frames.front().rgb_path, &first);
+  const Status status = ReadFirstFrame(*scene, &first);
   if (!status.ok()) return status;
   if (o.fx > 0) {
     scene->camera.image_width = first.cols;
@@ -108,15 +125,105 @@ DatasetFrame FrameFromImage(const fs::path& image) {
   return frame;
 }
 
+// The flags that give a camera without a file beside the input: --camera, --fx, --hfov.
+bool CameraFromCommandLine(const CameraOverrides& o) {
+  return !o.camera_file.empty() || o.fx > 0 || o.hfov_deg > 0;
+}
+
+// A ROS 1 bag: one scene named by the bag, its camera from the bag's CameraInfo unless the
+// command line gives one.
+Status ResolveBag(const std::string& input, const CameraOverrides& overrides,
+                  const BagTopicOptions& topics, InputScene* scene) {
+  scene->kind = InputKind::kRosBag;
+  scene->stream_path = input;
+  scene->name = fs::path(input).stem().string();
+#ifdef CORRIDOR_HAVE_ROSBAG
+  std::string info_topic;
+  Status status = ChooseBagTopics(input, topics.image_topic, topics.camera_info_topic,
+                                  &scene->image_topic, &info_topic);
+  if (!status.ok()) return status;
+  std::vector<BagTopic> all;
+  status = ListBagTopics(input, &all);
+  if (!status.ok()) return status;
+  for (const auto& t : all) {
+    if (t.name == scene->image_topic) scene->frame_count = t.messages;
+  }
+  const std::string where = input + " " + scene->image_topic;
+  if (CameraFromCommandLine(overrides)) return FinishCamera(overrides, "", where, scene);
+  if (info_topic.empty()) {
+    return Status::InvalidArgument(input + ": no sensor_msgs/CameraInfo beside " +
+                                   scene->image_topic +
+                                   " and no --camera; pass --camera=FILE, --camera_info_topic, "
+                                   "or --fx/--hfov");
+  }
+  status = ReadBagCameraInfo(input, info_topic, &scene->camera, &scene->frame_id);
+  if (!status.ok()) return status;
+  scene->camera_source = input + " " + info_topic;
+  scene->camera.mount_height = overrides.camera_height;
+  if (overrides.camera_height == 0) {
+    return Status::InvalidArgument("camera height unknown for " + where +
+                                   " (CameraInfo has none): pass --camera_height=M");
+  }
+  std::string why;
+  if (!scene->camera.Check(&why)) return Status::InvalidArgument("--camera_height: " + why);
+  return Status::Ok();
+#else
+  (void)overrides;
+  (void)topics;
+  return Status::InvalidArgument(input + ": this build has no ROS bag support (configure with "
+                                 "-DCORRIDOR_WITH_ROSBAG=ON)");
+#endif
+}
+
+// A video: one scene named by the file; the camera must come from the command line.
+Status ResolveVideo(const std::string& input, const CameraOverrides& overrides,
+                    InputScene* scene) {
+  scene->kind = InputKind::kVideo;
+  scene->stream_path = input;
+  scene->name = fs::path(input).stem().string();
+  if (!CameraFromCommandLine(overrides)) {
+    return Status::InvalidArgument(input + ": a video carries no calibration; pass --camera=FILE "
+                                   "(or --fx/--fy/--cx/--cy, or --hfov=DEG) and --camera_height=M");
+  }
+  cv::Mat first;
+  Status status = ReadFirstFrame(*scene, &first);  // Opens it: a clear error if it cannot.
+  if (!status.ok()) return status;
+  cv::VideoCapture capture(input);
+  const double count = capture.get(cv::CAP_PROP_FRAME_COUNT);
+  const double fps = capture.get(cv::CAP_PROP_FPS);
+  scene->frame_count = count > 0 && std::isfinite(count) ? static_cast<int64_t>(count) : 0;
+  if (fps > 0 && std::isfinite(fps)) scene->frame_period = 1.0 / fps;
+  return FinishCamera(overrides, "", input, scene);
+}
+
 }  // namespace
 
+bool IsVideoPath(const std::string& path) {
+  static const char* const kVideo[] = {".avi", ".mp4", ".mkv", ".mov", ".webm", ".m4v",
+                                       ".mpg", ".mpeg", ".wmv", ".flv", ".ogv", ".mjpeg"};
+  const std::string ext = LowerExtension(path);
+  for (const char* v : kVideo) {
+    if (ext == v) return true;
+  }
+  return false;
+}
+
 Status ResolveInput(const std::string& input, const CameraOverrides& overrides,
-                    std::vector<InputScene>* scenes) {
+                    std::vector<InputScene>* scenes, const BagTopicOptions& bag_topics) {
   scenes->clear();
   if (input.empty()) return Status::InvalidArgument("--input is required");
   const fs::path path(input);
   if (!Exists(path)) return Status::NotFound(input + ": no such file or folder");
   std::error_code ec;
+  if (!fs::is_directory(path, ec) && (LowerExtension(input) == ".bag" || IsVideoPath(input))) {
+    InputScene scene;
+    const Status status = LowerExtension(input) == ".bag"
+                              ? ResolveBag(input, overrides, bag_topics, &scene)
+                              : ResolveVideo(input, overrides, &scene);
+    if (!status.ok()) return status;
+    scenes->push_back(std::move(scene));
+    return Status::Ok();
+  }
   if (!fs::is_directory(path, ec)) {
     // A single image: the scene is its folder (or the scene above an rgb/ folder).
     fs::path folder = path.parent_path().empty() ? fs::path(".") : path.parent_path();
@@ -157,10 +264,14 @@ Status ResolveInput(const std::string& input, const CameraOverrides& overrides,
 }
 
 Status CheckFirstFrameSize(const InputScene& scene) {
-  if (scene.frames.empty()) return Status::Ok();
-  const std::string& path = scene.frames.front().rgb_path;
+  if (scene.kind == InputKind::kImages && scene.frames.empty()) return Status::Ok();
+  const bool stream = scene.kind != InputKind::kImages;
+  const std::string path = stream ? scene.stream_path : scene.frames.front().rgb_path;
   cv::Mat image;
-  if (!ReadColorImage(path, &image).ok()) return Status::Ok();
+  const Status read = ReadFirstFrame(scene, &image);
+  // A bag or video whose first frame does not decode (an unsupported encoding) is a
+  // configuration error; one bad image file among many is a failed frame.
+  if (!read.ok()) return stream ? read : Status::Ok();
   const Camera& camera = scene.camera;
   if (image.cols == camera.image_width && image.rows == camera.image_height) return Status::Ok();
   return Status::InvalidArgument(

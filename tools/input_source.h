@@ -20,22 +20,48 @@ struct CameraOverrides {
   double hfov_deg = 0.0;       // --hfov: pinhole from a horizontal field of view, for images without calibration (0 = none).
 };
 
-// One scene of an --input: a dataset scene, a plain folder of images, or a single image.
-struct InputScene {
-  std::string name;                  // Output folder name: the scene's or the folder's name.
-  std::string camera_source;         // The file the camera came from.
-  Camera camera;                     // Checked, with a positive mount height.
-  std::vector<DatasetFrame> frames;  // Sorted by name; depth/truth/floor paths when available.
+// Which topics of a ROS bag to read (--image_topic, --camera_info_topic).
+struct BagTopicOptions {
+  std::string image_topic;        // "" = the bag's only sensor_msgs/Image or CompressedImage topic.
+  std::string camera_info_topic;  // "" = the camera_info topic beside the image topic.
 };
 
-// Resolves --input (an image file, a folder of images, or a dataset root in the foundation
-// layout) into scenes with their cameras: --camera if given, else --fx/--fy/--cx/--cy, else
+// What holds a scene's frames.
+enum class InputKind {
+  kImages,  // Image files (frames[]).
+  kRosBag,  // The image messages of one topic of a ROS 1 bag (stream_path, image_topic).
+  kVideo,   // A video file that OpenCV's VideoCapture reads (stream_path).
+};
+
+// One scene of an --input: a dataset scene, a plain folder of images, a single image, a ROS bag
+// or a video.
+struct InputScene {
+  std::string name;                  // Output folder name: the scene's or the folder's name.
+  std::string camera_source;         // Where the camera came from (a file, a bag topic, flags).
+  Camera camera;                     // Checked, with a positive mount height.
+  std::vector<DatasetFrame> frames;  // kImages: sorted by name; depth/truth/floor paths if any.
+  InputKind kind = InputKind::kImages;  // What holds the frames.
+  std::string stream_path;           // kRosBag, kVideo: the file.
+  std::string image_topic;           // kRosBag: the topic read.
+  std::string frame_id;              // kRosBag: the CameraInfo's frame_id ("" otherwise).
+  int64_t frame_count = 0;           // Frames (a video's is its container's estimate).
+  double frame_period = 0.1;         // Seconds between frames without a stamp (a video's 1/fps).
+};
+
+// Resolves --input (an image file, a folder of images, a dataset root in the foundation
+// layout, a ROS 1 bag `.bag`, or a video file) into scenes with their cameras. A bag's camera is
+// its CameraInfo unless --camera or the uncalibrated flags are given; a video needs --camera (or
+// the uncalibrated flags). Otherwise: --camera if given, else --fx/--fy/--cx/--cy, else
 // <scene>/camera.yaml, else <dataset>/camera.yaml (for a single image or a plain folder:
 // camera.yaml beside the images, then in the parent folder), else --hfov; the pinholes from flags
 // take the size of the scene's first image. The height is --camera_height if given, else the camera_height key.
 // Every failure is an InvalidArgument or NotFound that names the path.
 Status ResolveInput(const std::string& input, const CameraOverrides& overrides,
-                    std::vector<InputScene>* scenes);
+                    std::vector<InputScene>* scenes,
+                    const BagTopicOptions& bag_topics = BagTopicOptions());
+
+// True for the file extensions read as videos (.avi, .mp4, .mkv, .mov, .webm, ...).
+bool IsVideoPath(const std::string& path);
 
 // Is the calibration for these images? Reads the scene's first frame and compares its size with
 // the camera's: an InvalidArgument naming both files and both sizes when they differ, so that a

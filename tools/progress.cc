@@ -10,6 +10,7 @@ Progress::Progress(std::string label, int total)
 
 void Progress::Tick(int done) {
   if (total_ <= 1) return;
+  if (done > total_) total_ = done;  // A video's frame count is only its container's estimate.
   const auto now = std::chrono::steady_clock::now();
   if (done < total_ && drawn_ && now - last_draw_ < std::chrono::milliseconds(200)) return;
   last_draw_ = now;
