@@ -1,6 +1,7 @@
 #include "io/rosbag_io.h"
 
 #include <algorithm>
+#include <cstring>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -15,6 +16,7 @@
 #include <sensor_msgs/Image.h>
 
 #include "io/image_io.h"
+#include "io/isolated_child.h"
 
 namespace corridor {
 namespace {
@@ -92,6 +94,132 @@ Status DecodeCompressed(const std::string& format, const std::vector<uint8_t>& d
   return Status::Ok();
 }
 
+// Fields packed into a record of the reader child's pipe, and read back: little host-order
+// integers and doubles, strings with a 32-bit length.
+struct Packer {
+  std::string out;
+  void U32(uint32_t v) { out.append(reinterpret_cast<const char*>(&v), sizeof(v)); }
+  void F64(double v) { out.append(reinterpret_cast<const char*>(&v), sizeof(v)); }
+  void Str(const std::string& v) {
+    U32(static_cast<uint32_t>(v.size()));
+    out += v;
+  }
+  void Bytes(const void* data, size_t size) {
+    U32(static_cast<uint32_t>(size));
+    out.append(static_cast<const char*>(data), size);
+  }
+};
+
+class Unpacker {
+ public:
+  explicit Unpacker(const std::string& in) : in_(in) {}
+  uint32_t U32() { return Take<uint32_t>(); }
+  double F64() { return Take<double>(); }
+  std::string Str() {
+    const uint32_t n = U32();
+    if (!ok_ || n > in_.size() - pos_) {
+      ok_ = false;
+      return "";
+    }
+    pos_ += n;
+    return in_.substr(pos_ - n, n);
+  }
+  bool ok() const { return ok_; }
+
+ private:
+  template <typename T>
+  T Take() {
+    T v{};
+    if (!ok_ || sizeof(T) > in_.size() - pos_) {
+      ok_ = false;
+      return v;
+    }
+    std::memcpy(&v, in_.data() + pos_, sizeof(T));
+    pos_ += sizeof(T);
+    return v;
+  }
+  const std::string& in_;
+  size_t pos_ = 0;
+  bool ok_ = true;
+};
+
+void SendStatus(const Status& status, RecordWriter* out) {
+  Packer p;
+  p.U32(static_cast<uint32_t>(status.code()));
+  p.Str(status.message());
+  out->Write('E', p.out);
+}
+
+Status ReceiveStatus(Unpacker* u) {
+  const uint32_t code = u->U32();
+  const std::string message = u->Str();
+  if (!u->ok() || code == 0 || code > static_cast<uint32_t>(StatusCode::kInternal)) {
+    return Status::Internal("malformed status from the bag reader");
+  }
+  return Status(static_cast<StatusCode>(code), message);
+}
+
+// Kinds of the 'I' records.
+constexpr uint32_t kRawImage = 0, kCompressedImage = 1, kOtherMessage = 2;
+
+// In the child: one message of the image topic, deserialised by the ROS library.
+std::string PackImage(const rosbag::MessageInstance& m) {
+  Packer p;
+  if (auto raw = m.instantiate<sensor_msgs::Image>()) {
+    const ros::Time t = raw->header.stamp.isZero() ? m.getTime() : raw->header.stamp;
+    p.U32(kRawImage);
+    p.U32(t.sec);
+    p.U32(t.nsec);
+    p.Str(raw->header.frame_id);
+    p.Str(raw->encoding);
+    p.U32(raw->width);
+    p.U32(raw->height);
+    p.U32(raw->step);
+    p.Bytes(raw->data.data(), raw->data.size());
+  } else if (auto compressed = m.instantiate<sensor_msgs::CompressedImage>()) {
+    const ros::Time t = compressed->header.stamp.isZero() ? m.getTime() : compressed->header.stamp;
+    p.U32(kCompressedImage);
+    p.U32(t.sec);
+    p.U32(t.nsec);
+    p.Str(compressed->header.frame_id);
+    p.Str(compressed->format);
+    p.Bytes(compressed->data.data(), compressed->data.size());
+  } else {
+    p.U32(kOtherMessage);
+    p.U32(m.getTime().sec);
+    p.U32(m.getTime().nsec);
+    p.Str(m.getDataType());
+  }
+  return p.out;
+}
+
+// In the parent: decodes an 'I' record into image->bgr (OpenCV runs here, not in the child).
+Status UnpackImage(Unpacker* u, BagImage* image) {
+  const uint32_t kind = u->U32();
+  image->stamp.sec = u->U32();
+  image->stamp.nsec = u->U32();
+  const std::string text = u->Str();
+  if (kind == kOtherMessage) {
+    return Status::InvalidArgument("a " + text + " message, not an image");
+  }
+  image->frame_id = text;
+  const std::string encoding = u->Str();
+  Status status;
+  if (kind == kRawImage) {
+    const uint32_t width = u->U32(), height = u->U32(), step = u->U32();
+    const std::string data = u->Str();
+    if (!u->ok() || width > (1u << 16) || height > (1u << 16) || step > (1u << 20)) {
+      return Status::InvalidArgument("malformed image message");
+    }
+    return DecodeRawImage(encoding, static_cast<int>(width), static_cast<int>(height),
+                          static_cast<int>(step), reinterpret_cast<const uint8_t*>(data.data()),
+                          data.size(), &image->bgr);
+  }
+  const std::string data = u->Str();
+  if (!u->ok()) return Status::InvalidArgument("malformed compressed image message");
+  return DecodeCompressed(encoding, std::vector<uint8_t>(data.begin(), data.end()), &image->bgr);
+}
+
 }  // namespace
 
 BagStamp BagStamp::FromNanoseconds(int64_t ns) {
@@ -114,24 +242,53 @@ bool IsImageTopicType(const std::string& type) {
 
 Status ListBagTopics(const std::string& bag_path, std::vector<BagTopic>* topics) {
   topics->clear();
-  rosbag::Bag bag;
-  const Status status = OpenForReading(bag_path, &bag);
+  std::unique_ptr<IsolatedChild> child;
+  Status status = IsolatedChild::Start(
+      [&](RecordWriter* out) {
+        rosbag::Bag bag;
+        const Status opened = OpenForReading(bag_path, &bag);
+        if (!opened.ok()) {
+          SendStatus(opened, out);
+          return;
+        }
+        try {
+          rosbag::View view(bag);
+          std::map<std::string, std::string> types;
+          for (const rosbag::ConnectionInfo* c : view.getConnections()) types[c->topic] = c->datatype;
+          for (const auto& [name, type] : types) {
+            Packer p;
+            p.Str(name);
+            p.Str(type);
+            p.U32(rosbag::View(bag, rosbag::TopicQuery(name)).size());
+            out->Write('T', p.out);
+          }
+        } catch (const std::exception& e) {
+          SendStatus(Status::InvalidArgument(bag_path + ": cannot read the bag's index: " + e.what()),
+                     out);
+          return;
+        }
+        out->Write('Z', "");
+      },
+      &child);
   if (!status.ok()) return status;
-  try {
-    rosbag::View view(bag);
-    std::map<std::string, BagTopic> by_name;
-    for (const rosbag::ConnectionInfo* c : view.getConnections()) {
-      BagTopic& t = by_name[c->topic];
-      t.name = c->topic;
-      t.type = c->datatype;
-    }
-    for (auto& [name, topic] : by_name) {
-      topic.messages = rosbag::View(bag, rosbag::TopicQuery(name)).size();
-      topics->push_back(topic);
-    }
-  } catch (const std::exception& e) {
-    return Status::InvalidArgument(bag_path + ": cannot read the bag's index: " + e.what());
+  char tag = 0;
+  std::string record;
+  bool complete = false;
+  while (!complete && child->Read(&tag, &record)) {
+    Unpacker u(record);
+    if (tag == 'E') return ReceiveStatus(&u);
+    if (tag == 'Z') complete = true;
+    if (tag != 'T') continue;
+    BagTopic t;
+    t.name = u.Str();
+    t.type = u.Str();
+    t.messages = u.U32();
+    topics->push_back(t);
   }
+  status = child->Finish(bag_path + ": the rosbag library crashed reading the bag's index: the "
+                         "bag is corrupt");
+  if (!status.ok()) return status;
+  if (!complete) return Status::InvalidArgument(bag_path + ": the bag's index could not be read");
   return Status::Ok();
 }
 
@@ -189,43 +346,85 @@ Status ChooseBagTopics(const std::string& bag_path, const std::string& requested
 
 Status ReadBagCameraInfo(const std::string& bag_path, const std::string& info_topic,
                          Camera* camera, std::string* frame_id) {
-  rosbag::Bag bag;
-  const Status status = OpenForReading(bag_path, &bag);
+  std::unique_ptr<IsolatedChild> child;
+  Status status = IsolatedChild::Start(
+      [&](RecordWriter* out) {
+        rosbag::Bag bag;
+        const Status opened = OpenForReading(bag_path, &bag);
+        if (!opened.ok()) {
+          SendStatus(opened, out);
+          return;
+        }
+        try {
+          for (const rosbag::MessageInstance& m : rosbag::View(bag, rosbag::TopicQuery(info_topic))) {
+            const auto info = m.instantiate<sensor_msgs::CameraInfo>();
+            if (!info) continue;
+            Packer p;
+            p.U32(info->width);
+            p.U32(info->height);
+            for (double k : info->K) p.F64(k);
+            p.U32(static_cast<uint32_t>(info->D.size()));
+            for (double d : info->D) p.F64(d);
+            p.Str(info->distortion_model);
+            p.Str(info->header.frame_id);
+            out->Write('C', p.out);
+            break;
+          }
+        } catch (const std::exception& e) {
+          SendStatus(Status::InvalidArgument(bag_path + ": cannot read " + info_topic + ": " +
+                                             e.what()),
+                     out);
+          return;
+        }
+        out->Write('Z', "");
+      },
+      &child);
   if (!status.ok()) return status;
-  sensor_msgs::CameraInfo::ConstPtr info;
-  try {
-    rosbag::View view(bag, rosbag::TopicQuery(info_topic));
-    for (const rosbag::MessageInstance& m : view) {
-      info = m.instantiate<sensor_msgs::CameraInfo>();
-      if (info) break;
-    }
-  } catch (const std::exception& e) {
-    return Status::InvalidArgument(bag_path + ": cannot read " + info_topic + ": " + e.what());
-  }
   const std::string where = bag_path + " " + info_topic;
-  if (!info) return Status::InvalidArgument(where + ": no sensor_msgs/CameraInfo message");
-  const bool no_distortion =
-      info->D.empty() || std::all_of(info->D.begin(), info->D.end(), [](double d) { return d == 0; });
-  if (!no_distortion && info->distortion_model != "plumb_bob") {
-    return Status::InvalidArgument(where + ": distortion model '" + info->distortion_model +
+  char tag = 0;
+  std::string record;
+  bool found = false;
+  Camera c;
+  std::string model, id;
+  std::vector<double> distortion;
+  while (child->Read(&tag, &record)) {
+    Unpacker u(record);
+    if (tag == 'E') return ReceiveStatus(&u);
+    if (tag != 'C') continue;
+    found = true;
+    c.image_width = static_cast<int>(u.U32());
+    c.image_height = static_cast<int>(u.U32());
+    double k[9];
+    for (double& v : k) v = u.F64();
+    c.fx = k[0];
+    c.fy = k[4];
+    c.cx = k[2];
+    c.cy = k[5];
+    const uint32_t n = u.U32();
+    for (uint32_t i = 0; i < n && u.ok(); ++i) distortion.push_back(u.F64());
+    model = u.Str();
+    id = u.Str();
+    if (!u.ok()) return Status::InvalidArgument(where + ": malformed CameraInfo");
+  }
+  status = child->Finish(where + ": the rosbag library crashed reading the CameraInfo: the bag "
+                         "is corrupt");
+  if (!status.ok()) return status;
+  if (!found) return Status::InvalidArgument(where + ": no sensor_msgs/CameraInfo message");
+  const bool no_distortion = std::all_of(distortion.begin(), distortion.end(),
+                                         [](double d) { return d == 0; });
+  if (!no_distortion && model != "plumb_bob") {
+    return Status::InvalidArgument(where + ": distortion model '" + model +
                                    "' is not supported (plumb_bob only)");
   }
-  if (!no_distortion && info->D.size() != 5) {
+  if (!no_distortion && distortion.size() != 5) {
     return Status::InvalidArgument(where + ": plumb_bob needs 5 coefficients, D has " +
-                                   std::to_string(info->D.size()));
+                                   std::to_string(distortion.size()));
   }
-  Camera c;
-  c.image_width = static_cast<int>(info->width);
-  c.image_height = static_cast<int>(info->height);
-  c.fx = info->K[0];
-  c.fy = info->K[4];
-  c.cx = info->K[2];
-  c.cy = info->K[5];
-  if (!no_distortion) std::copy(info->D.begin(), info->D.end(), c.distortion.begin());
+  if (!no_distortion) std::copy(distortion.begin(), distortion.end(), c.distortion.begin());
   std::string why;
   if (!c.CheckIntrinsics(&why)) return Status::InvalidArgument(where + ": " + why);
   *camera = c;
-  if (frame_id != nullptr) *frame_id = info->header.frame_id;
+  if (frame_id != nullptr) *frame_id = id;
   return Status::Ok();
 }
 
@@ -262,10 +461,9 @@ Status DecodeRawImage(const std::string& encoding, int width, int height, int st
 struct BagImageReader::Impl {
   std::string path;
   std::string topic;
-  rosbag::Bag bag;
-  std::unique_ptr<rosbag::View> view;
-  rosbag::View::iterator next;
-  bool broken = false;
+  std::unique_ptr<IsolatedChild> child;
+  BagStamp last;       // The last message's stamp, for messages about what follows it.
+  bool ended = false;  // The stream is over (its end, an error, or a crash already reported).
 };
 
 BagImageReader::BagImageReader(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
@@ -276,54 +474,79 @@ Status BagImageReader::Open(const std::string& bag_path, const std::string& imag
   auto impl = std::make_unique<Impl>();
   impl->path = bag_path;
   impl->topic = image_topic;
-  const Status status = OpenForReading(bag_path, &impl->bag);
+  // The child opens the bag, says whether it could ('O' or 'E'), then sends every message of the
+  // topic as an 'I' record, and 'Z' at the end (or 'E' when a message cannot be read).
+  Status status = IsolatedChild::Start(
+      [&](RecordWriter* out) {
+        rosbag::Bag bag;
+        const Status opened = OpenForReading(bag_path, &bag);
+        if (!opened.ok()) {
+          SendStatus(opened, out);
+          return;
+        }
+        try {
+          rosbag::View view(bag, rosbag::TopicQuery(image_topic));
+          if (!out->Write('O', "")) return;
+          for (const rosbag::MessageInstance& m : view) {
+            if (!out->Write('I', PackImage(m))) return;
+          }
+        } catch (const std::exception& e) {
+          SendStatus(Status::InvalidArgument(bag_path + " " + image_topic + ": corrupt message: " +
+                                             e.what()),
+                     out);
+          return;
+        }
+        out->Write('Z', "");
+      },
+      &impl->child);
   if (!status.ok()) return status;
-  try {
-    impl->view = std::make_unique<rosbag::View>(impl->bag, rosbag::TopicQuery(image_topic));
-    impl->next = impl->view->begin();
-  } catch (const std::exception& e) {
-    return Status::InvalidArgument(bag_path + ": cannot read " + image_topic + ": " + e.what());
+  char tag = 0;
+  std::string record;
+  if (!impl->child->Read(&tag, &record)) {
+    status = impl->child->Finish(bag_path + ": the rosbag library crashed opening the bag: the "
+                                 "bag is corrupt");
+    return status.ok() ? Status::InvalidArgument(bag_path + ": the bag could not be read") : status;
+  }
+  if (tag == 'E') {
+    Unpacker u(record);
+    return ReceiveStatus(&u);
   }
   reader->reset(new BagImageReader(std::move(impl)));
   return Status::Ok();
 }
 
-size_t BagImageReader::size() const { return impl_->view->size(); }
-
 bool BagImageReader::Next(BagImage* image) {
   *image = BagImage();
-  if (impl_->broken) return false;
+  if (impl_->ended) return false;
   const std::string where = impl_->path + " " + impl_->topic;
-  try {
-    if (impl_->next == impl_->view->end()) return false;
-    const rosbag::MessageInstance& m = *impl_->next;
-    image->stamp.sec = m.getTime().sec;  // Replaced by header.stamp below when it is set.
-    image->stamp.nsec = m.getTime().nsec;
-    if (auto raw = m.instantiate<sensor_msgs::Image>()) {
-      if (!raw->header.stamp.isZero()) {
-        image->stamp = {raw->header.stamp.sec, raw->header.stamp.nsec};
-      }
-      image->frame_id = raw->header.frame_id;
-      image->status = DecodeRawImage(raw->encoding, static_cast<int>(raw->width),
-                                     static_cast<int>(raw->height), static_cast<int>(raw->step),
-                                     raw->data.data(), raw->data.size(), &image->bgr);
-    } else if (auto compressed = m.instantiate<sensor_msgs::CompressedImage>()) {
-      if (!compressed->header.stamp.isZero()) {
-        image->stamp = {compressed->header.stamp.sec, compressed->header.stamp.nsec};
-      }
-      image->frame_id = compressed->header.frame_id;
-      image->status = DecodeCompressed(compressed->format, compressed->data, &image->bgr);
-    } else {
-      image->status = Status::InvalidArgument("a " + m.getDataType() + " message, not an image");
-    }
-    ++impl_->next;
-  } catch (const std::exception& e) {
-    // A corrupt chunk: report it on this frame and end the stream (the bag cannot be trusted on).
-    impl_->broken = true;
-    image->status = Status::InvalidArgument(where + ": corrupt message: " + e.what());
-    image->bgr.release();
+  char tag = 0;
+  std::string record;
+  if (!impl_->child->Read(&tag, &record)) {
+    // The child died before saying the stream ended: report it on one last frame.
+    impl_->ended = true;
+    const bool first = impl_->last.sec == 0 && impl_->last.nsec == 0;
+    const Status crashed = impl_->child->Finish(
+        where + ": the rosbag library crashed reading the " +
+        (first ? std::string("first message") : "message after " + impl_->last.ToString()) +
+        ": the bag is corrupt there");
+    if (crashed.ok()) return false;
+    image->stamp = impl_->last;
+    image->status = crashed;
     return true;
   }
+  Unpacker u(record);
+  if (tag == 'Z') {
+    impl_->ended = true;
+    return false;
+  }
+  if (tag == 'E') {
+    impl_->ended = true;
+    image->stamp = impl_->last;
+    image->status = ReceiveStatus(&u);
+    return true;
+  }
+  image->status = UnpackImage(&u, image);
+  impl_->last = image->stamp;
   if (!image->status.ok()) {
     image->status = Status(image->status.code(), where + " at " + image->stamp.ToString() + ": " +
                                                      image->status.message());

@@ -13,6 +13,8 @@
 namespace corridor {
 
 // ROS 1 bags, read and written with Debian's rosbag_storage library (never parsed by hand).
+// rosbag_storage reads out of bounds on some corrupt bags, so every read runs in a forked child
+// process that sends the deserialised messages through a pipe: a crash there is a status here.
 // Every failure (a missing, truncated or unindexed bag, a topic that is not there, an encoding
 // this library does not decode) is a Status whose message names the bag and what is wrong.
 
@@ -78,7 +80,6 @@ class BagImageReader {
   // The next message; false at the end. A message that cannot be decoded comes back with a
   // status and no image; a bag that turns out corrupt mid-way ends the stream with a status.
   bool Next(BagImage* image);
-  size_t size() const;  // The number of messages on the topic.
 
  private:
   struct Impl;
