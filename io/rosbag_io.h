@@ -66,10 +66,13 @@ struct BagImage {
   Status status;        // Why the image could not be decoded (an unsupported encoding names it).
 };
 
-// Decodes a sensor_msgs/Image (rgb8, bgr8, mono8, bgra8, rgba8) or sensor_msgs/CompressedImage
-// (jpeg, png) into BGR; exposed for tests.
+// Decodes a sensor_msgs/Image's pixels (rgb8, bgr8, mono8, bgra8, rgba8) into BGR; any other
+// encoding is an InvalidArgument naming it, as is data too short for width, height and step.
 Status DecodeRawImage(const std::string& encoding, int width, int height, int step,
                       const uint8_t* data, size_t size, cv::Mat* bgr);
+// Decodes a sensor_msgs/CompressedImage's bytes (format containing jpeg or png) into BGR.
+Status DecodeCompressedImage(const std::string& format, const std::vector<uint8_t>& data,
+                             cv::Mat* bgr);
 
 // Reads the image messages of one topic in bag order (the order of their receive times).
 class BagImageReader {

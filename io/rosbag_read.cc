@@ -7,15 +7,12 @@
 #include <map>
 #include <set>
 
-#include <opencv2/imgcodecs.hpp>
-#include <opencv2/imgproc.hpp>
 #include <rosbag/bag.h>
 #include <rosbag/view.h>
 #include <sensor_msgs/CameraInfo.h>
 #include <sensor_msgs/CompressedImage.h>
 #include <sensor_msgs/Image.h>
 
-#include "io/image_io.h"
 #include "io/isolated_child.h"
 
 namespace corridor {
@@ -23,8 +20,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr char kImageType[] = "sensor_msgs/Image";
-constexpr char kCompressedType[] = "sensor_msgs/CompressedImage";
 constexpr char kCameraInfoType[] = "sensor_msgs/CameraInfo";
 
 // Opens a bag for reading; every rosbag exception becomes a status naming the bag.
@@ -69,29 +64,6 @@ const BagTopic* FindTopic(const std::vector<BagTopic>& topics, const std::string
     if (t.name == name) return &t;
   }
   return nullptr;
-}
-
-Status DecodeCompressed(const std::string& format, const std::vector<uint8_t>& data,
-                        cv::Mat* bgr) {
-  std::string lower = format;
-  std::transform(lower.begin(), lower.end(), lower.begin(), ::tolower);
-  if (lower.find("jpeg") == std::string::npos && lower.find("jpg") == std::string::npos &&
-      lower.find("png") == std::string::npos) {
-    return Status::InvalidArgument("unsupported compressed image format '" + format +
-                                   "' (supported: jpeg, png)");
-  }
-  cv::Mat decoded;
-  try {
-    decoded = cv::imdecode(data, cv::IMREAD_COLOR);
-  } catch (const cv::Exception&) {
-    decoded.release();
-  }
-  if (decoded.empty()) {
-    return Status::InvalidArgument("compressed image (format '" + format + ", " +
-                                   std::to_string(data.size()) + " bytes) does not decode");
-  }
-  *bgr = decoded;
-  return Status::Ok();
 }
 
 // Fields packed into a record of the reader child's pipe, and read back: little host-order
@@ -217,28 +189,10 @@ Status UnpackImage(Unpacker* u, BagImage* image) {
   }
   const std::string data = u->Str();
   if (!u->ok()) return Status::InvalidArgument("malformed compressed image message");
-  return DecodeCompressed(encoding, std::vector<uint8_t>(data.begin(), data.end()), &image->bgr);
+  return DecodeCompressedImage(encoding, std::vector<uint8_t>(data.begin(), data.end()), &image->bgr);
 }
 
 }  // namespace
-
-BagStamp BagStamp::FromNanoseconds(int64_t ns) {
-  BagStamp stamp;
-  if (ns < 0) ns = 0;
-  stamp.sec = static_cast<uint32_t>(ns / 1000000000);
-  stamp.nsec = static_cast<uint32_t>(ns % 1000000000);
-  return stamp;
-}
-
-std::string BagStamp::ToString() const {
-  char text[32];
-  std::snprintf(text, sizeof(text), "%u.%09u", sec, nsec);
-  return text;
-}
-
-bool IsImageTopicType(const std::string& type) {
-  return type == kImageType || type == kCompressedType;
-}
 
 Status ListBagTopics(const std::string& bag_path, std::vector<BagTopic>* topics) {
   topics->clear();
@@ -428,36 +382,6 @@ Status ReadBagCameraInfo(const std::string& bag_path, const std::string& info_to
   return Status::Ok();
 }
 
-Status DecodeRawImage(const std::string& encoding, int width, int height, int step,
-                      const uint8_t* data, size_t size, cv::Mat* bgr) {
-  static const std::map<std::string, std::pair<int, int>> kTypes = {
-      {"rgb8", {CV_8UC3, cv::COLOR_RGB2BGR}},  {"bgr8", {CV_8UC3, -1}},
-      {"mono8", {CV_8UC1, cv::COLOR_GRAY2BGR}}, {"bgra8", {CV_8UC4, cv::COLOR_BGRA2BGR}},
-      {"rgba8", {CV_8UC4, cv::COLOR_RGBA2BGR}}};
-  const auto type = kTypes.find(encoding);
-  if (type == kTypes.end()) {
-    return Status::InvalidArgument("unsupported image encoding '" + encoding +
-                                   "' (supported: rgb8, bgr8, mono8, bgra8, rgba8, and "
-                                   "compressed jpeg or png)");
-  }
-  const int channels = CV_MAT_CN(type->second.first);
-  if (width <= 0 || height <= 0 || step < width * channels ||
-      size < static_cast<size_t>(step) * static_cast<size_t>(height)) {
-    return Status::InvalidArgument("image message of " + std::to_string(width) + "x" +
-                                   std::to_string(height) + " " + encoding + " with step " +
-                                   std::to_string(step) + " holds only " + std::to_string(size) +
-                                   " bytes");
-  }
-  const cv::Mat view(height, width, type->second.first, const_cast<uint8_t*>(data),
-                     static_cast<size_t>(step));
-  if (type->second.second < 0) {
-    *bgr = view.clone();
-  } else {
-    cv::cvtColor(view, *bgr, type->second.second);
-  }
-  return Status::Ok();
-}
-
 struct BagImageReader::Impl {
   std::string path;
   std::string topic;
@@ -553,103 +477,6 @@ bool BagImageReader::Next(BagImage* image) {
     image->bgr.release();
   }
   return true;
-}
-
-struct BagDepthWriter::Impl {
-  std::string path;
-  std::string part_path;
-  rosbag::Bag bag;
-  bool open = false;
-};
-
-BagDepthWriter::BagDepthWriter(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
-
-BagDepthWriter::~BagDepthWriter() {
-  if (impl_ && impl_->open) (void)Close();
-}
-
-Status BagDepthWriter::Open(const std::string& bag_path, std::unique_ptr<BagDepthWriter>* writer) {
-  auto impl = std::make_unique<Impl>();
-  impl->path = bag_path;
-  impl->part_path = bag_path + ".part";
-  std::error_code ec;
-  const fs::path parent = fs::path(bag_path).parent_path();
-  if (!parent.empty()) fs::create_directories(parent, ec);
-  try {
-    impl->bag.open(impl->part_path, rosbag::bagmode::Write);
-  } catch (const std::exception& e) {
-    return Status::IoError(bag_path + ": cannot open the output bag for writing: " + e.what());
-  }
-  impl->open = true;
-  writer->reset(new BagDepthWriter(std::move(impl)));
-  return Status::Ok();
-}
-
-Status BagDepthWriter::Write(const std::string& image_topic, const std::string& info_topic,
-                             const BagStamp& stamp, const std::string& frame_id,
-                             const cv::Mat& depth_m, const Camera& camera) {
-  if (!impl_->open) return Status::IoError(impl_->path + ": the output bag is closed");
-  if (depth_m.type() != CV_32FC1 || depth_m.cols != camera.image_width ||
-      depth_m.rows != camera.image_height) {
-    return Status::InvalidArgument(impl_->path + ": depth to write must be 32FC1 of the camera's " +
-                                   "size");
-  }
-  const ros::Time time(stamp.sec, stamp.nsec);
-  if (time < ros::TIME_MIN) {
-    return Status::InvalidArgument(impl_->path + ": stamp " + stamp.ToString() +
-                                   " is before ROS's earliest time");
-  }
-  sensor_msgs::Image image;
-  image.header.stamp = time;
-  image.header.frame_id = frame_id;
-  image.height = static_cast<uint32_t>(depth_m.rows);
-  image.width = static_cast<uint32_t>(depth_m.cols);
-  image.encoding = "16UC1";
-  image.is_bigendian = 0;  // uint16 little-endian, as on every ROS host.
-  image.step = image.width * 2;
-  const cv::Mat mm = DepthToMillimetres(depth_m);
-  image.data.resize(static_cast<size_t>(image.step) * image.height);
-  for (int r = 0; r < mm.rows; ++r) {
-    const uint16_t* src = mm.ptr<uint16_t>(r);
-    uint8_t* dst = image.data.data() + static_cast<size_t>(r) * image.step;
-    for (int c = 0; c < mm.cols; ++c) {
-      dst[2 * c] = static_cast<uint8_t>(src[c] & 0xFF);
-      dst[2 * c + 1] = static_cast<uint8_t>(src[c] >> 8);
-    }
-  }
-  sensor_msgs::CameraInfo info;
-  info.header = image.header;
-  info.width = image.width;
-  info.height = image.height;
-  info.distortion_model = "plumb_bob";
-  info.D.assign(camera.distortion.begin(), camera.distortion.end());
-  info.K = {camera.fx, 0, camera.cx, 0, camera.fy, camera.cy, 0, 0, 1};
-  info.R = {1, 0, 0, 0, 1, 0, 0, 0, 1};
-  info.P = {camera.fx, 0, camera.cx, 0, 0, camera.fy, camera.cy, 0, 0, 0, 1, 0};
-  try {
-    impl_->bag.write(image_topic, time, image);
-    impl_->bag.write(info_topic, time, info);
-  } catch (const std::exception& e) {
-    return Status::IoError(impl_->path + ": cannot write to the output bag: " + e.what());
-  }
-  return Status::Ok();
-}
-
-Status BagDepthWriter::Close() {
-  if (!impl_->open) return Status::Ok();
-  impl_->open = false;
-  try {
-    impl_->bag.close();
-  } catch (const std::exception& e) {
-    return Status::IoError(impl_->path + ": cannot finish the output bag: " + e.what());
-  }
-  std::error_code ec;
-  fs::rename(impl_->part_path, impl_->path, ec);
-  if (ec) {
-    return Status::IoError(impl_->path + ": cannot rename " + impl_->part_path + ": " +
-                           ec.message());
-  }
-  return Status::Ok();
 }
 
 }  // namespace corridor

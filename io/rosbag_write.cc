@@ -1,0 +1,113 @@
+// BagDepthWriter: depth maps and CameraInfo into a ROS 1 bag, with rosbag_storage.
+
+#include <filesystem>
+
+#include <rosbag/bag.h>
+#include <sensor_msgs/CameraInfo.h>
+#include <sensor_msgs/Image.h>
+
+#include "io/image_io.h"
+#include "io/rosbag_io.h"
+
+namespace corridor {
+
+namespace fs = std::filesystem;
+
+struct BagDepthWriter::Impl {
+  std::string path;
+  std::string part_path;
+  rosbag::Bag bag;
+  bool open = false;
+};
+
+BagDepthWriter::BagDepthWriter(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+
+BagDepthWriter::~BagDepthWriter() {
+  if (impl_ && impl_->open) (void)Close();
+}
+
+Status BagDepthWriter::Open(const std::string& bag_path, std::unique_ptr<BagDepthWriter>* writer) {
+  auto impl = std::make_unique<Impl>();
+  impl->path = bag_path;
+  impl->part_path = bag_path + ".part";
+  std::error_code ec;
+  const fs::path parent = fs::path(bag_path).parent_path();
+  if (!parent.empty()) fs::create_directories(parent, ec);
+  try {
+    impl->bag.open(impl->part_path, rosbag::bagmode::Write);
+  } catch (const std::exception& e) {
+    return Status::IoError(bag_path + ": cannot open the output bag for writing: " + e.what());
+  }
+  impl->open = true;
+  writer->reset(new BagDepthWriter(std::move(impl)));
+  return Status::Ok();
+}
+
+Status BagDepthWriter::Write(const std::string& image_topic, const std::string& info_topic,
+                             const BagStamp& stamp, const std::string& frame_id,
+                             const cv::Mat& depth_m, const Camera& camera) {
+  if (!impl_->open) return Status::IoError(impl_->path + ": the output bag is closed");
+  if (depth_m.type() != CV_32FC1 || depth_m.cols != camera.image_width ||
+      depth_m.rows != camera.image_height) {
+    return Status::InvalidArgument(impl_->path + ": depth to write must be 32FC1 of the camera's " +
+                                   "size");
+  }
+  const ros::Time time(stamp.sec, stamp.nsec);
+  if (time < ros::TIME_MIN) {
+    return Status::InvalidArgument(impl_->path + ": stamp " + stamp.ToString() +
+                                   " is before ROS's earliest time");
+  }
+  sensor_msgs::Image image;
+  image.header.stamp = time;
+  image.header.frame_id = frame_id;
+  image.height = static_cast<uint32_t>(depth_m.rows);
+  image.width = static_cast<uint32_t>(depth_m.cols);
+  image.encoding = "16UC1";
+  image.is_bigendian = 0;  // uint16 little-endian, as on every ROS host.
+  image.step = image.width * 2;
+  const cv::Mat mm = DepthToMillimetres(depth_m);
+  image.data.resize(static_cast<size_t>(image.step) * image.height);
+  for (int r = 0; r < mm.rows; ++r) {
+    const uint16_t* src = mm.ptr<uint16_t>(r);
+    uint8_t* dst = image.data.data() + static_cast<size_t>(r) * image.step;
+    for (int c = 0; c < mm.cols; ++c) {
+      dst[2 * c] = static_cast<uint8_t>(src[c] & 0xFF);
+      dst[2 * c + 1] = static_cast<uint8_t>(src[c] >> 8);
+    }
+  }
+  sensor_msgs::CameraInfo info;
+  info.header = image.header;
+  info.width = image.width;
+  info.height = image.height;
+  info.distortion_model = "plumb_bob";
+  info.D.assign(camera.distortion.begin(), camera.distortion.end());
+  info.K = {camera.fx, 0, camera.cx, 0, camera.fy, camera.cy, 0, 0, 1};
+  info.R = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+  info.P = {camera.fx, 0, camera.cx, 0, 0, camera.fy, camera.cy, 0, 0, 0, 1, 0};
+  try {
+    impl_->bag.write(image_topic, time, image);
+    impl_->bag.write(info_topic, time, info);
+  } catch (const std::exception& e) {
+    return Status::IoError(impl_->path + ": cannot write to the output bag: " + e.what());
+  }
+  return Status::Ok();
+}
+
+Status BagDepthWriter::Close() {
+  if (!impl_->open) return Status::Ok();
+  impl_->open = false;
+  try {
+    impl_->bag.close();
+  } catch (const std::exception& e) {
+    return Status::IoError(impl_->path + ": cannot finish the output bag: " + e.what());
+  }
+  std::error_code ec;
+  fs::rename(impl_->part_path, impl_->path, ec);
+  if (ec) {
+    return Status::IoError(impl_->path + ": cannot rename " + impl_->part_path + ": " +
+                           ec.message());
+  }
+  return Status::Ok();
+}
+
+}  // namespace corridor
