@@ -291,6 +291,11 @@ int Main(int argc, char** argv) {
   topics.camera_info_topic = FLAGS_camera_info_topic;
   status = ResolveInput(FLAGS_input, CameraOverridesFromFlags(), &scenes, topics);
   if (!status.ok()) return Usage(status.message());
+  if (FLAGS_focal == "auto") {
+    for (const auto& scene : scenes) {
+      std::printf("%s: scene %s: %s\n", "corridor_depth", scene.name.c_str(), scene.camera_source.c_str());
+    }
+  }
   for (const auto& scene : scenes) {
     status = CheckFirstFrameSize(scene);
     if (!status.ok()) return Usage(status.message());

@@ -150,6 +150,11 @@ int Main(int argc, char** argv) {
   std::vector<InputScene> scenes;
   status = ResolveInput(FLAGS_dataset, CameraOverridesFromFlags(), &scenes);
   if (!status.ok()) return Usage(status.message());
+  if (FLAGS_focal == "auto") {
+    for (const auto& scene : scenes) {
+      std::printf("%s: scene %s: %s\n", "corridor_eval", scene.name.c_str(), scene.camera_source.c_str());
+    }
+  }
   size_t total = 0;
   for (const auto& scene : scenes) total += scene.frames.size();
   if (total == 0) return Usage("no frames to evaluate in " + FLAGS_dataset);

@@ -14,6 +14,7 @@
 #ifdef CORRIDOR_HAVE_ROSBAG
 #include "io/rosbag_io.h"
 #endif
+#include "tools/focal_auto.h"
 #include "tools/frame_source.h"
 
 namespace corridor {
@@ -59,6 +60,13 @@ Status CameraFromFlags(const CameraOverrides& o, InputScene* scene) {
     scene->camera.cx = o.cx >= 0 ? o.cx : 0.5 * (first.cols - 1);
     scene->camera.cy = o.cy >= 0 ? o.cy : 0.5 * (first.rows - 1);
     scene->camera_source = "--fx/--fy/--cx/--cy";
+  } else if (o.focal == "auto") {
+    const double fallback = o.hfov_deg > 0 ? o.hfov_deg : kDefaultFallbackHfovDeg;
+    double focal = 0;
+    const Status estimated = EstimateSceneFocal(*scene, fallback, &focal, &scene->camera_source);
+    if (!estimated.ok()) return estimated;
+    scene->camera = Camera::FromHorizontalFov(first.cols, first.rows, M_PI / 2, 0);
+    scene->camera.fx = scene->camera.fy = focal;
   } else {
     scene->camera = Camera::FromHorizontalFov(first.cols, first.rows, o.hfov_deg * M_PI / 180.0, 0);
     scene->camera_source = "--hfov";
@@ -69,15 +77,28 @@ Status CameraFromFlags(const CameraOverrides& o, InputScene* scene) {
 // Applies the overrides and checks the camera; `found` is the YAML that applies ("" if none).
 Status FinishCamera(const CameraOverrides& overrides, const std::string& found,
                     const std::string& scene_path, InputScene* scene) {
+  if (!overrides.focal.empty() && overrides.focal != "auto") {
+    return Status::InvalidArgument("--focal=" + overrides.focal + ": the only value is 'auto'");
+  }
+  if (overrides.focal == "auto" && (!overrides.camera_file.empty() || overrides.fx > 0)) {
+    return Status::InvalidArgument("--focal=auto estimates the focal length: it does not go with "
+                                   "--camera or --fx");
+  }
   const bool pinhole_flags = overrides.camera_file.empty() && overrides.fx > 0;
-  const bool fov_flag = overrides.camera_file.empty() && found.empty() && overrides.hfov_deg > 0;
+  const bool fov_flag = overrides.camera_file.empty() &&
+                        ((found.empty() && overrides.hfov_deg > 0) || overrides.focal == "auto");
   if (pinhole_flags || fov_flag) {
     if (!(overrides.hfov_deg >= 0 && overrides.hfov_deg < 180)) {
       return Status::InvalidArgument("--hfov must be in (0, 180) degrees");
     }
     Status status = CameraFromFlags(overrides, scene);
     if (!status.ok()) return status;
-    if (overrides.camera_height != 0) scene->camera.mount_height = overrides.camera_height;
+    if (overrides.camera_height != 0) {
+      scene->camera.mount_height = overrides.camera_height;
+    } else if (!found.empty()) {  // --focal=auto beside a camera.yaml: its camera_height.
+      Camera beside;
+      if (ReadCameraYaml(found, &beside).ok()) scene->camera.mount_height = beside.mount_height;
+    }
     if (scene->camera.mount_height == 0) {
       return Status::InvalidArgument("camera height unknown for " + scene_path + ": pass --camera_height=M");
     }
@@ -127,7 +148,7 @@ DatasetFrame FrameFromImage(const fs::path& image) {
 
 // The flags that give a camera without a file beside the input: --camera, --fx, --hfov.
 bool CameraFromCommandLine(const CameraOverrides& o) {
-  return !o.camera_file.empty() || o.fx > 0 || o.hfov_deg > 0;
+  return !o.camera_file.empty() || o.fx > 0 || o.hfov_deg > 0 || o.focal == "auto";
 }
 
 // A ROS 1 bag: one scene named by the bag, its camera from the bag's CameraInfo unless the

@@ -18,6 +18,7 @@ struct CameraOverrides {
   double cx = -1.0;            // --cx, pixels (< 0 = image centre).
   double cy = -1.0;            // --cy, pixels (< 0 = image centre).
   double hfov_deg = 0.0;       // --hfov: pinhole from a horizontal field of view, for images without calibration (0 = none).
+  std::string focal;           // --focal: "auto" = focal from two vanishing points (fallback --hfov, else 60 deg); "" = off.
 };
 
 // Which topics of a ROS bag to read (--image_topic, --camera_info_topic).
@@ -48,11 +49,15 @@ struct InputScene {
   double frame_period = 0.1;         // Seconds between frames without a stamp (a video's 1/fps).
 };
 
+// The field of view --focal=auto falls back to without --hfov, degrees.
+constexpr double kDefaultFallbackHfovDeg = 60.0;
+
 // Resolves --input (an image file, a folder of images, a dataset root in the foundation
 // layout, a ROS 1 bag `.bag`, or a video file) into scenes with their cameras. A bag's camera is
 // its CameraInfo unless --camera or the uncalibrated flags are given; a video needs --camera (or
 // the uncalibrated flags). Otherwise: --camera if given, else --fx/--fy/--cx/--cy, else
-// <scene>/camera.yaml, else <dataset>/camera.yaml (for a single image or a plain folder:
+// --focal=auto (a pinhole at the centre whose focal comes from the images; it replaces a
+// camera.yaml), else <scene>/camera.yaml, else <dataset>/camera.yaml (for a single image or a plain folder:
 // camera.yaml beside the images, then in the parent folder), else --hfov; the pinholes from flags
 // take the size of the scene's first image. The height is --camera_height if given, else the camera_height key.
 // Every failure is an InvalidArgument or NotFound that names the path.

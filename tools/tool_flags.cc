@@ -9,6 +9,10 @@ DEFINE_double(cy, -1.0, "Uncalibrated mode: principal point y, px (< 0 = image c
 DEFINE_double(hfov, 0.0,
               "Uncalibrated mode: horizontal field of view, degrees, for images without a "
               "calibration file (principal point at the centre)");
+DEFINE_string(focal, "",
+              "Uncalibrated mode: 'auto' estimates the focal length from two orthogonal vanishing "
+              "points (corridor + door tops, tile grout, light edges or verticals); falls back to "
+              "--hfov (else 60 deg) and says so");
 DEFINE_double(camera_height, 0.0, "Camera height above the floor, m; overrides the YAML key");
 DEFINE_string(solver, "joint",
               "Solver: grid, closed_form, lm, or a chain such as closed_form+lm");
@@ -61,6 +65,7 @@ CameraOverrides CameraOverridesFromFlags() {
   overrides.cx = FLAGS_cx;
   overrides.cy = FLAGS_cy;
   overrides.hfov_deg = FLAGS_hfov;
+  overrides.focal = FLAGS_focal;
   return overrides;
 }
 

@@ -14,6 +14,7 @@ DECLARE_double(fy);
 DECLARE_double(cx);
 DECLARE_double(cy);
 DECLARE_double(hfov);
+DECLARE_string(focal);
 DECLARE_string(solver);
 DECLARE_string(rasterizer);
 DECLARE_double(max_range);
