@@ -2,7 +2,9 @@
 // sizes: Stages/<stage>[/<variant>]/<width>x<height>.
 //   detect      DetectJunctions (the edge-extraction thread's work)
 //   segments    its first part: blur, colour gradient, Canny and Hough on the ROI
-//   lab         its Lab conversion of the ROI (floor appearance)
+//   appearance  its floor-appearance cues: SampleFloor and the BoundaryScore of every merged line
+//               of the ROI (Lab of the sampled pixels only)
+//   ceiling     DetectCeiling on the frame's true walls
 //   solve/NAME  each solver on the detected junctions' points
 //   rasterize/NAME  each rasteriser on the closed_form+lm geometry
 // OpenCV runs on one thread.
@@ -13,6 +15,8 @@
 #include <opencv2/imgproc.hpp>
 
 #include "benchmarks/bench_frames.h"
+#include "perception/appearance.h"
+#include "perception/ceiling_detector.h"
 #include "perception/line_segments.h"
 #include "pipeline/recover_depth.h"
 
@@ -45,14 +49,44 @@ void Segments(benchmark::State& state, int width, int height) {
   }
 }
 
-void Lab(benchmark::State& state, int width, int height) {
+void Appearance(benchmark::State& state, int width, int height) {
   cv::setNumThreads(1);
   const bench::BenchFrame& input = bench::PaperLikeFrame(width, height);
-  cv::Mat lab;
+  const JunctionDetectorOptions o;
+  const SegmentOptions options{o.blur_sigma,     o.canny_high,        o.canny_low_ratio,
+                               o.canny_auto_percentile, o.canny_auto_min, o.hough_threshold,
+                               std::max(8.0, o.hough_min_length_fraction * height),
+                               o.hough_max_gap};
+  const int roi_top = height / 2;
+  const std::vector<MergedLine> lines = MergeSegments(
+      DetectSegments(input.frame.bgr, roi_top, options).segments, o.merge_angle_deg,
+      o.merge_distance_px);
+  const cv::Mat roi = input.frame.bgr.rowRange(roi_top, height);
   for (auto _ : state) {
-    cv::cvtColor(input.frame.bgr.rowRange(height / 2, height), lab, cv::COLOR_BGR2Lab);
-    benchmark::DoNotOptimize(lab.data);
+    const FloorAppearance floor = SampleFloor(roi, roi_top);
+    double total = 0;
+    for (const MergedLine& line : lines) total += BoundaryScore(roi, floor, line, roi_top);
+    benchmark::DoNotOptimize(total);
   }
+  state.counters["lines"] = static_cast<double>(lines.size());
+}
+
+void Ceiling(benchmark::State& state, int width, int height) {
+  cv::setNumThreads(1);
+  const bench::BenchFrame& input = bench::PaperLikeFrame(width, height);
+  const CeilingDetectorOptions options;
+  CeilingEstimate estimate;
+  for (auto _ : state) {
+    const Status status =
+        DetectCeiling(input.frame.bgr, input.camera, input.frame.truth, options, &estimate);
+    benchmark::DoNotOptimize(status);
+  }
+  if (!estimate.found) {
+    state.SkipWithError(estimate.reason.c_str());
+    return;
+  }
+  state.counters["height_error_mm"] =
+      1000 * std::abs(estimate.height - input.frame.truth.ceiling_height);
 }
 
 // The solvers' input: the detected junctions of the frame.
@@ -114,7 +148,9 @@ const bool registered = [] {
         ->Unit(benchmark::kMicrosecond);
     benchmark::RegisterBenchmark(("Stages/segments" + suffix).c_str(), Segments, w, h)
         ->Unit(benchmark::kMicrosecond);
-    benchmark::RegisterBenchmark(("Stages/lab" + suffix).c_str(), Lab, w, h)
+    benchmark::RegisterBenchmark(("Stages/appearance" + suffix).c_str(), Appearance, w, h)
+        ->Unit(benchmark::kMicrosecond);
+    benchmark::RegisterBenchmark(("Stages/ceiling" + suffix).c_str(), Ceiling, w, h)
         ->Unit(benchmark::kMicrosecond);
     for (const char* solver : {"grid", "closed_form", "lm", "closed_form+lm", "joint"}) {
       benchmark::RegisterBenchmark(("Stages/solve/" + std::string(solver) + suffix).c_str(), Solve,

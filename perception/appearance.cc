@@ -4,6 +4,8 @@
 #include <cmath>
 #include <vector>
 
+#include <opencv2/imgproc.hpp>
+
 namespace corridor {
 namespace {
 
@@ -22,34 +24,70 @@ float LabDistance(const cv::Vec3f& a, const cv::Vec3f& b) {
   return std::sqrt(0.0385f * d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
 }
 
-FloorAppearance SampleFloor(const cv::Mat& lab, int roi_top) {
-  const int rows = lab.rows, cols = lab.cols;
+std::vector<cv::Vec3b> BgrToLab(const std::vector<cv::Vec3b>& bgr) {
+  std::vector<cv::Vec3b> lab(bgr.size());
+  if (bgr.empty()) return lab;
+  // One row of pixels, converted in place of the whole image's conversion.
+  const cv::Mat in(1, static_cast<int>(bgr.size()), CV_8UC3, const_cast<cv::Vec3b*>(bgr.data()));
+  cv::Mat out(1, static_cast<int>(lab.size()), CV_8UC3, lab.data());
+  cv::cvtColor(in, out, cv::COLOR_BGR2Lab);
+  CV_Assert(out.data == reinterpret_cast<uchar*>(lab.data()));
+  return lab;
+}
+
+FloorAppearance SampleFloor(const cv::Mat& bgr, int roi_top) {
+  const int rows = bgr.rows, cols = bgr.cols;
   const int image_rows = rows + roi_top;
   const int v0 = std::clamp(static_cast<int>(0.88 * image_rows) - roi_top, 0, rows - 1);
   const int u0 = static_cast<int>(0.35 * cols);
   const int u1 = std::max(u0 + 1, static_cast<int>(0.65 * cols));
+  std::vector<cv::Vec3b> patch;
+  for (int v = v0; v < rows; v += 2) {
+    for (int u = u0; u < u1; u += 2) patch.push_back(bgr.at<cv::Vec3b>(v, u));
+  }
   std::vector<float> channel[3];
   std::vector<cv::Vec3f> pixels;
-  for (int v = v0; v < rows; v += 2) {
-    for (int u = u0; u < u1; u += 2) {
-      const cv::Vec3f p = lab.at<cv::Vec3b>(v, u);
-      pixels.push_back(p);
-      for (int c = 0; c < 3; ++c) channel[c].push_back(p[c]);
-    }
+  pixels.reserve(patch.size());
+  for (int c = 0; c < 3; ++c) channel[c].reserve(patch.size());
+  for (const cv::Vec3b& lab : BgrToLab(patch)) {
+    const cv::Vec3f p = lab;
+    pixels.push_back(p);
+    for (int c = 0; c < 3; ++c) channel[c].push_back(p[c]);
   }
   FloorAppearance floor;
   for (int c = 0; c < 3; ++c) floor.lab[c] = Median(&channel[c]);
   std::vector<float> distances;
+  distances.reserve(pixels.size());
   for (const auto& p : pixels) distances.push_back(LabDistance(p, floor.lab));
   floor.spread = std::max(1.0f, Median(&distances));
   return floor;
 }
 
-double BoundaryScore(const cv::Mat& lab, const FloorAppearance& floor, const MergedLine& line,
+double BoundaryScore(const cv::Mat& bgr, const FloorAppearance& floor, const MergedLine& line,
                      int roi_top) {
   const Eigen::Vector2d normal = line.line.head<2>();  // Points down (toward the floor).
   const int samples = 24;
   const double offset = 4.0;  // Strip distance from the line, px.
+  // The 3x3 patches on each side of every usable sample: 9 above, then 9 below.
+  std::vector<cv::Vec3b> patches;
+  patches.reserve(samples * 18);
+  for (int i = 0; i < samples; ++i) {
+    const Eigen::Vector2d p = line.start + (line.end - line.start) * ((i + 0.5) / samples);
+    const Eigen::Vector2d pa = p - offset * normal, pb = p + offset * normal;
+    const int ua = cvRound(pa.x()), va = cvRound(pa.y()), ub = cvRound(pb.x()), vb = cvRound(pb.y());
+    if (ua < 1 || ub < 1 || ua >= bgr.cols - 1 || ub >= bgr.cols - 1 || va < roi_top + 1 ||
+        vb >= roi_top + bgr.rows - 1 || va >= roi_top + bgr.rows - 1) {
+      continue;
+    }
+    for (const cv::Point centre : {cv::Point(ua, va - roi_top), cv::Point(ub, vb - roi_top)}) {
+      for (int dv = -1; dv <= 1; ++dv) {
+        for (int du = -1; du <= 1; ++du) {
+          patches.push_back(bgr.at<cv::Vec3b>(centre.y + dv, centre.x + du));
+        }
+      }
+    }
+  }
+  const std::vector<cv::Vec3b> lab = BgrToLab(patches);
   // Floor-likeness of each strip, per sample, so that a few samples on grout, a box or a door
   // do not decide: the junction has floor just below and something else above. (A baseboard top
   // has baseboard below; a grout line or a reflection has floor on both sides.)
@@ -59,25 +97,15 @@ double BoundaryScore(const cv::Mat& lab, const FloorAppearance& floor, const Mer
     return std::exp(-d * d / (2 * sigma * sigma));
   };
   double sum = 0;
-  int count = 0;
-  for (int i = 0; i < samples; ++i) {
-    const Eigen::Vector2d p = line.start + (line.end - line.start) * ((i + 0.5) / samples);
-    const Eigen::Vector2d pa = p - offset * normal, pb = p + offset * normal;
-    const int ua = cvRound(pa.x()), va = cvRound(pa.y()), ub = cvRound(pb.x()), vb = cvRound(pb.y());
-    if (ua < 1 || ub < 1 || ua >= lab.cols - 1 || ub >= lab.cols - 1 || va < roi_top + 1 ||
-        vb >= roi_top + lab.rows - 1 || va >= roi_top + lab.rows - 1) {
-      continue;
-    }
+  const int count = static_cast<int>(lab.size() / 18);
+  for (int s = 0; s < count; ++s) {
     // 3x3 means on each side.
     cv::Vec3f ca(0, 0, 0), cb(0, 0, 0);
-    for (int dv = -1; dv <= 1; ++dv) {
-      for (int du = -1; du <= 1; ++du) {
-        ca += cv::Vec3f(lab.at<cv::Vec3b>(va - roi_top + dv, ua + du));
-        cb += cv::Vec3f(lab.at<cv::Vec3b>(vb - roi_top + dv, ub + du));
-      }
+    for (int k = 0; k < 9; ++k) {
+      ca += cv::Vec3f(lab[18 * s + k]);
+      cb += cv::Vec3f(lab[18 * s + 9 + k]);
     }
     sum += likeness(cb / 9.0f) * (1.0 - likeness(ca / 9.0f));
-    ++count;
   }
   return count > 0 ? sum / count : 0.0;
 }

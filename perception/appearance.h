@@ -1,5 +1,7 @@
 #pragma once
 
+#include <vector>
+
 #include <opencv2/core.hpp>
 
 #include "perception/line_segments.h"
@@ -17,14 +19,19 @@ struct FloorAppearance {
 // light falloff and grazing angles change lightness along a uniform surface.
 float LabDistance(const cv::Vec3f& a, const cv::Vec3f& b);
 
-// `lab`: the ROI rows [roi_top, image rows) of the image in 8-bit Lab (CV_8UC3).
-FloorAppearance SampleFloor(const cv::Mat& lab, int roi_top);
+// 8-bit Lab colours of a few 8-bit BGR pixels, exactly as cv::cvtColor(COLOR_BGR2Lab) converts
+// them inside a whole image (the conversion is per pixel), at the cost of these pixels only.
+std::vector<cv::Vec3b> BgrToLab(const std::vector<cv::Vec3b>& bgr);
+
+// `bgr`: the ROI rows [roi_top, image rows) of the 8-bit BGR image (CV_8UC3). Only the sampled
+// pixels are converted to Lab.
+FloorAppearance SampleFloor(const cv::Mat& bgr, int roi_top);
 
 // How much a line looks like the floor's upper boundary, in [0, 1]: the floor-likeness of the
 // strip just below it times the unlikeness of the strip above. Near 1 for the junction; near 0
 // for lines inside the floor (grout, reflections: floor on both sides) and on the wall (baseboard
-// tops, door bottoms: no floor below). `lab` as for SampleFloor.
-double BoundaryScore(const cv::Mat& lab, const FloorAppearance& floor, const MergedLine& line,
+// tops, door bottoms: no floor below). `bgr` as for SampleFloor.
+double BoundaryScore(const cv::Mat& bgr, const FloorAppearance& floor, const MergedLine& line,
                      int roi_top);
 
 }  // namespace corridor

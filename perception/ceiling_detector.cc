@@ -11,12 +11,18 @@
 namespace corridor {
 namespace {
 
+// Rows of edges computed beyond the band the lines cross, so that the blur and Canny's gradients
+// and hysteresis see nearly the neighbourhood they would see over the whole image.
+constexpr int kBandMargin = 8;
+
 // Raw pixel of a corridor-frame point, or false when it is behind the camera or off the image.
-bool ProjectToImage(const Camera& camera, const CorridorRotation<double>& r, double x, double y,
-                    double z, cv::Point* pixel) {
+// `distorted`: camera.HasDistortion(), hoisted out of the search's loops.
+bool ProjectToImage(const Camera& camera, bool distorted, const CorridorRotation<double>& r,
+                    double x, double y, double z, cv::Point* pixel) {
   const Vec3<double> c = r.ToCamera({x, y, z});
   if (c.z < 0.05) return false;
-  const Eigen::Vector2d raw = camera.Distort(camera.Project({c.x, c.y, c.z}));
+  const Eigen::Vector2d ideal = camera.Project({c.x, c.y, c.z});
+  const Eigen::Vector2d raw = distorted ? camera.Distort(ideal) : ideal;
   if (!raw.allFinite()) return false;
   pixel->x = cvRound(raw.x());
   pixel->y = cvRound(raw.y());
@@ -24,21 +30,62 @@ bool ProjectToImage(const Camera& camera, const CorridorRotation<double>& r, dou
          pixel->y < camera.image_height - 1;
 }
 
-// Fraction of the line's visible samples that have an edge pixel within 1 px.
-double LineSupport(const cv::Mat& edges, const Camera& camera, const CorridorRotation<double>& r,
-                   double wall_x, double y, const CeilingDetectorOptions& o) {
-  int visible = 0, hits = 0;
+// The pixels of every searched line: for each height, the left then the right ceiling/wall
+// junction, each as `samples` points evenly spaced in inverse distance along the corridor.
+struct SearchLines {
+  std::vector<double> heights;  // The searched ceiling heights, m.
+  int samples = 0;              // Points per line.
+  std::vector<cv::Point> pixels;  // [(height * 2 + side) * samples + i]; x = -1 where not visible.
+  int top = 0, bottom = -1;     // Rows spanned by the visible pixels (bottom < top: none).
+
+  const cv::Point* Line(size_t height, int side) const {
+    return pixels.data() + (2 * height + side) * samples;
+  }
+};
+
+void ProjectSearchLines(const Camera& camera, const CorridorGeometry& g,
+                        const CeilingDetectorOptions& o, SearchLines* lines) {
+  const CorridorRotation<double> r(g.pitch, g.yaw);
+  const double h = g.camera_height;
+  const double wall_x[2] = {-g.LeftDistance(), g.RightDistance()};
+  const double lo = std::max(o.min_height, h + 0.1);
+  for (double height = lo; height <= o.max_height; height += o.step) {
+    lines->heights.push_back(height);
+  }
+  lines->samples = o.samples;
+  std::vector<double> depths(o.samples);
   for (int i = 0; i < o.samples; ++i) {
     const double inv = 1.0 / o.near_distance +
                        (1.0 / o.far_distance - 1.0 / o.near_distance) * i / (o.samples - 1.0);
-    cv::Point p;
-    if (!ProjectToImage(camera, r, wall_x, y, 1.0 / inv, &p)) continue;
-    ++visible;
-    bool hit = false;
-    for (int dv = -1; dv <= 1 && !hit; ++dv) {
-      for (int du = -1; du <= 1 && !hit; ++du) hit = edges.at<uchar>(p.y + dv, p.x + du) != 0;
+    depths[i] = 1.0 / inv;
+  }
+  lines->pixels.assign(lines->heights.size() * 2 * o.samples, cv::Point(-1, -1));
+  lines->top = camera.image_height;
+  lines->bottom = -1;
+  const bool distorted = camera.HasDistortion();
+  cv::Point* out = lines->pixels.data();
+  for (const double height : lines->heights) {
+    for (int side = 0; side < 2; ++side) {
+      for (int i = 0; i < o.samples; ++i, ++out) {
+        cv::Point p;
+        const double y = h - height;  // Corridor Y of the ceiling (negative: above the camera).
+        if (!ProjectToImage(camera, distorted, r, wall_x[side], y, depths[i], &p)) continue;
+        *out = p;
+        lines->top = std::min(lines->top, p.y);
+        lines->bottom = std::max(lines->bottom, p.y);
+      }
     }
-    hits += hit;
+  }
+}
+
+// Fraction of the line's visible samples that have an edge pixel within 1 px (`near_edges`: the
+// edges dilated by 3x3, rows from `band_top`); 0 with fewer than 8 visible samples.
+double LineSupport(const cv::Point* line, int samples, const cv::Mat& near_edges, int band_top) {
+  int visible = 0, hits = 0;
+  for (int i = 0; i < samples; ++i) {
+    if (line[i].x < 0) continue;
+    ++visible;
+    hits += near_edges.ptr<uchar>(line[i].y - band_top)[line[i].x] != 0;
   }
   return visible >= 8 ? static_cast<double>(hits) / visible : 0.0;
 }
@@ -67,27 +114,35 @@ Status DetectCeiling(const cv::Mat& bgr, const Camera& camera, const CorridorGeo
   if (bgr.empty() || bgr.cols != camera.image_width || bgr.rows != camera.image_height) {
     return Status::InvalidArgument("ceiling detector: image does not match the camera");
   }
-  cv::Mat gray, edges;
+  // Every candidate line is projected once; edges are computed only on the rows they cross.
+  SearchLines lines;
+  ProjectSearchLines(camera, g, o, &lines);
+  if (lines.bottom < lines.top) {
+    estimate->reason = "no ceiling/wall junction follows the image's edges";
+    return Status::Ok();
+  }
+  const int band_top = std::max(0, lines.top - 2 - kBandMargin);
+  const int band_bottom = std::min(bgr.rows, lines.bottom + 3 + kBandMargin);
+  const cv::Mat band = bgr.rowRange(band_top, band_bottom);
+  cv::Mat gray, edges, near_edges;
   if (bgr.channels() == 1) {
-    gray = bgr.clone();
+    gray = band.clone();
   } else {
-    cv::cvtColor(bgr, gray, cv::COLOR_BGR2GRAY);
+    cv::cvtColor(band, gray, cv::COLOR_BGR2GRAY);
   }
   cv::GaussianBlur(gray, gray, cv::Size(0, 0), 1.0);
   cv::Canny(gray, edges, 20, 60, 3, true);
+  cv::dilate(edges, near_edges, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(3, 3)));
 
-  const CorridorRotation<double> r(g.pitch, g.yaw);
-  const double h = g.camera_height, x_left = -g.LeftDistance(), x_right = g.RightDistance();
-  double best_score = 0, best_height = 0, best_left = 0, best_right = 0;
-  const double lo = std::max(o.min_height, h + 0.1);
-  for (double height = lo; height <= o.max_height; height += o.step) {
-    const double y = h - height;  // Corridor Y of the ceiling (negative: above the camera).
-    const double left = LineSupport(edges, camera, r, x_left, y, o);
-    const double right = LineSupport(edges, camera, r, x_right, y, o);
+  double best_score = 0, best_left = 0, best_right = 0;
+  size_t best = 0;
+  for (size_t k = 0; k < lines.heights.size(); ++k) {
+    const double left = LineSupport(lines.Line(k, 0), lines.samples, near_edges, band_top);
+    const double right = LineSupport(lines.Line(k, 1), lines.samples, near_edges, band_top);
     const double score = left + right;
     if (score > best_score) {
       best_score = score;
-      best_height = height;
+      best = k;
       best_left = left;
       best_right = right;
     }
@@ -99,19 +154,20 @@ Status DetectCeiling(const cv::Mat& bgr, const Camera& camera, const CorridorGeo
     return Status::Ok();
   }
   // Refine: every edge pixel within 2 px of an accepted line gives H_c from its ray and wall.
+  const CorridorRotation<double> r(g.pitch, g.yaw);
+  const double h = g.camera_height;
   std::vector<double> heights;
   const Vec3<double> n = r.FloorNormal(), m = r.WallNormal();
   for (int side = 0; side < 2; ++side) {
     if ((side == 0 ? best_left : best_right) < o.min_support) continue;
-    const double wall_x = side == 0 ? x_left : x_right;
-    for (int i = 0; i < o.samples; ++i) {
-      const double inv = 1.0 / o.near_distance +
-                         (1.0 / o.far_distance - 1.0 / o.near_distance) * i / (o.samples - 1.0);
-      cv::Point p;
-      if (!ProjectToImage(camera, r, wall_x, h - best_height, 1.0 / inv, &p)) continue;
+    const double wall_x = side == 0 ? -g.LeftDistance() : g.RightDistance();
+    const cv::Point* line = lines.Line(best, side);
+    for (int i = 0; i < lines.samples; ++i) {
+      const cv::Point p = line[i];
+      if (p.x < 0) continue;
       for (int dv = -2; dv <= 2; ++dv) {
         const int v = p.y + dv;
-        if (v < 0 || v >= edges.rows || edges.at<uchar>(v, p.x) == 0) continue;
+        if (v < band_top || v >= band_bottom || edges.at<uchar>(v - band_top, p.x) == 0) continue;
         const Eigen::Vector2d ideal = camera.Undistort({static_cast<double>(p.x), static_cast<double>(v)});
         const Vec3<double> ray{(ideal.x() - camera.cx) / camera.fx,
                                (ideal.y() - camera.cy) / camera.fy, 1.0};

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <vector>
 
 #include <Eigen/Geometry>
 #include <opencv2/imgproc.hpp>
@@ -40,20 +41,64 @@ void SupportPixels(const std::vector<Eigen::Vector2d>& side, const Eigen::Vector
   }
 }
 
-// Huber-weighted total least squares refit; false when too few points.
+// Weighted total least squares line through the points (weights `w`, or all 1 when empty),
+// normalised with b >= 0.
+Eigen::Vector3d WeightedLine(const std::vector<Eigen::Vector2d>& points,
+                             const std::vector<double>& w) {
+  const Eigen::Vector2d anchor = points.front();  // Centre of the sums, against cancellation.
+  double sw = 0, su = 0, sv = 0, suu = 0, suv = 0, svv = 0;
+  for (size_t k = 0; k < points.size(); ++k) {
+    const double wk = w.empty() ? 1.0 : w[k];
+    const double u = points[k].x() - anchor.x(), v = points[k].y() - anchor.y();
+    sw += wk;
+    su += wk * u;
+    sv += wk * v;
+    suu += wk * u * u;
+    suv += wk * u * v;
+    svv += wk * v * v;
+  }
+  const double mu = su / sw, mv = sv / sw;
+  const double cuu = suu / sw - mu * mu, cuv = suv / sw - mu * mv, cvv = svv / sw - mv * mv;
+  // Direction of the largest spread; the normal is perpendicular to it.
+  const double angle = 0.5 * std::atan2(2 * cuv, cuu - cvv);
+  Eigen::Vector3d l(-std::sin(angle), std::cos(angle), 0);
+  l.z() = -(l.x() * (mu + anchor.x()) + l.y() * (mv + anchor.y()));
+  if (l.y() < 0) l = -l;
+  return l;
+}
+
+// The line with the least sum of distances to the points, as cv::fitLine(DIST_HUBER) picks it
+// among its iterates: iteratively reweighted total least squares from the unweighted fit, first
+// with Huber weights min(1, 1.345 / d), then with L1 weights 1 / max(d, 0.05), keeping the
+// iterate with the least sum; false when too few points. One deterministic start, where
+// cv::fitLine tries 20 random ones.
 bool RefitLine(const std::vector<Eigen::Vector2d>& points, Eigen::Vector3d* line) {
   if (points.size() < 8) return false;
-  std::vector<cv::Point2f> cv_points;
-  cv_points.reserve(points.size());
-  for (const auto& p : points) cv_points.emplace_back(static_cast<float>(p.x()), static_cast<float>(p.y()));
-  cv::Vec4f fit;
-  cv::fitLine(cv_points, fit, cv::DIST_HUBER, 0, 0.01, 0.01);
-  const Eigen::Vector2d direction(fit[0], fit[1]), origin(fit[2], fit[3]);
-  Eigen::Vector3d l(-direction.y(), direction.x(), 0);
-  l.z() = -l.head<2>().dot(origin);
-  l /= l.head<2>().norm();
-  if (l.y() < 0) l = -l;
-  *line = l;
+  constexpr double kHuber = 1.345, kMinDistance = 0.05;
+  std::vector<double> w;
+  Eigen::Vector3d l = WeightedLine(points, w), best = l;
+  double best_sum = 1e300;
+  bool l1 = false;  // Huber weights until they converge, then L1 weights.
+  for (int iteration = 0; iteration < 60; ++iteration) {
+    w.resize(points.size());
+    double sum = 0;
+    for (size_t k = 0; k < points.size(); ++k) {
+      const double d = std::abs(l.dot(points[k].homogeneous()));
+      sum += d;
+      w[k] = l1 ? 1.0 / std::max(d, kMinDistance) : (d < kHuber ? 1.0 : kHuber / d);
+    }
+    if (sum < best_sum) {
+      best_sum = sum;
+      best = l;
+    }
+    const Eigen::Vector3d next = WeightedLine(points, w);
+    const bool converged = (next - l).cwiseAbs().maxCoeff() < 1e-6;
+    l = next;
+    if (converged && l1) break;
+    if (converged) l1 = true;
+  }
+  if (!best.allFinite()) return false;
+  *line = best;
   return true;
 }
 
@@ -207,9 +252,8 @@ Status DetectJunctions(const cv::Mat& bgr, const JunctionDetectorOptions& option
   const double max_inclination = options.max_inclination_deg >= 0
                                      ? options.max_inclination_deg
                                      : 90.0 - std::atan2(height, width) * 180.0 / M_PI;
-  cv::Mat lab;
-  cv::cvtColor(color.rowRange(roi_top, height), lab, cv::COLOR_BGR2Lab);
-  const FloorAppearance floor = SampleFloor(lab, roi_top);
+  const cv::Mat roi = color.rowRange(roi_top, height);
+  const FloorAppearance floor = SampleFloor(roi, roi_top);
   std::vector<JunctionCandidate> left, right;
   for (const auto& line : lines) {
     if (line.length < min_length || line.length > max_length) continue;
@@ -217,7 +261,7 @@ Status DetectJunctions(const cv::Mat& bgr, const JunctionDetectorOptions& option
         line.inclination_deg > max_inclination) {
       continue;
     }
-    JunctionCandidate candidate{line, BoundaryScore(lab, floor, line, roi_top)};
+    JunctionCandidate candidate{line, BoundaryScore(roi, floor, line, roi_top)};
     (line.slope < 0 ? left : right).push_back(candidate);
   }
   if (left.empty() || right.empty()) {

@@ -1,0 +1,72 @@
+// The floor-boundary cues: Lab of sampled pixels against OpenCV's whole-image conversion, and the
+// boundary score on a painted floor/wall image.
+#include "perception/appearance.h"
+
+#include <gtest/gtest.h>
+#include <opencv2/imgproc.hpp>
+
+namespace corridor {
+namespace {
+
+TEST(AppearanceTest, SampledLabEqualsTheWholeImageConversion) {
+  cv::Mat image(97, 131, CV_8UC3);
+  cv::RNG(11).fill(image, cv::RNG::UNIFORM, 0, 256);
+  cv::Mat lab;
+  cv::cvtColor(image, lab, cv::COLOR_BGR2Lab);
+  std::vector<cv::Point> where;
+  std::vector<cv::Vec3b> bgr;
+  cv::RNG pick(12);
+  for (int k = 0; k < 500; ++k) {
+    where.emplace_back(pick.uniform(0, image.cols), pick.uniform(0, image.rows));
+    bgr.push_back(image.at<cv::Vec3b>(where.back()));
+  }
+  const std::vector<cv::Vec3b> sampled = BgrToLab(bgr);
+  ASSERT_EQ(sampled.size(), where.size());
+  for (size_t k = 0; k < where.size(); ++k) {
+    EXPECT_EQ(sampled[k], lab.at<cv::Vec3b>(where[k])) << where[k];
+  }
+  EXPECT_TRUE(BgrToLab({}).empty());
+}
+
+// A grey wall above row 60 and a brown floor below it; the ROI starts at row 40.
+TEST(AppearanceTest, TheFloorEdgeScoresHighAndLinesInsideOneSurfaceLow) {
+  const cv::Scalar wall(200, 200, 200), floor_bgr(40, 90, 150);
+  cv::Mat image(160, 200, CV_8UC3, wall);
+  image.rowRange(60, 160).setTo(floor_bgr);
+  const int roi_top = 40;
+  const cv::Mat roi = image.rowRange(roi_top, image.rows);
+  const FloorAppearance floor = SampleFloor(roi, roi_top);
+  // The floor colour, converted on its own by OpenCV.
+  cv::Mat one(1, 1, CV_8UC3, floor_bgr), one_lab;
+  cv::cvtColor(one, one_lab, cv::COLOR_BGR2Lab);
+  const cv::Vec3b expected = one_lab.at<cv::Vec3b>(0, 0);
+  for (int c = 0; c < 3; ++c) EXPECT_EQ(floor.lab[c], expected[c]);
+  EXPECT_EQ(floor.spread, 1.0f);
+  const auto horizontal = [](double v) {
+    return LineThrough(Eigen::Vector2d(20, v), Eigen::Vector2d(180, v));
+  };
+  EXPECT_GT(BoundaryScore(roi, floor, horizontal(59.5), roi_top), 0.95);  // The floor's edge.
+  EXPECT_LT(BoundaryScore(roi, floor, horizontal(120), roi_top), 0.05);   // Inside the floor.
+  EXPECT_LT(BoundaryScore(roi, floor, horizontal(48), roi_top), 0.05);    // On the wall.
+  // Entirely above the ROI: no usable sample.
+  EXPECT_EQ(BoundaryScore(roi, floor, horizontal(10), roi_top), 0.0);
+}
+
+// A vertical line's normal points right: the floor must be on its right, the wall on its left.
+TEST(AppearanceTest, AVerticalBoundaryComparesItsLeftAndRightSides) {
+  const cv::Scalar wall(200, 200, 200), floor_bgr(40, 90, 150);
+  cv::Mat image(160, 200, CV_8UC3, wall);
+  image.colRange(100, 200).setTo(floor_bgr);
+  cv::Mat one(1, 1, CV_8UC3, floor_bgr), one_lab;
+  cv::cvtColor(one, one_lab, cv::COLOR_BGR2Lab);
+  FloorAppearance floor;
+  floor.lab = one_lab.at<cv::Vec3b>(0, 0);
+  const MergedLine boundary = LineThrough(Eigen::Vector2d(99.5, 10), Eigen::Vector2d(99.5, 150));
+  ASSERT_GT(boundary.line.x(), 0.99);  // Normal (1, 0).
+  EXPECT_GT(BoundaryScore(image, floor, boundary, 0), 0.95);
+  const MergedLine inside = LineThrough(Eigen::Vector2d(150, 10), Eigen::Vector2d(150, 150));
+  EXPECT_LT(BoundaryScore(image, floor, inside, 0), 0.05);
+}
+
+}  // namespace
+}  // namespace corridor
