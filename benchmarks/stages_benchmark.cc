@@ -5,6 +5,7 @@
 //   appearance  its floor-appearance cues: SampleFloor and the BoundaryScore of every merged line
 //               of the ROI (Lab of the sampled pixels only)
 //   ceiling     DetectCeiling on the frame's true walls
+//   end_wall    DetectEndWall on the frame's true geometry
 //   solve/NAME  each solver on the detected junctions' points
 //   rasterize/NAME  each rasteriser on the closed_form+lm geometry
 // OpenCV runs on one thread.
@@ -17,6 +18,7 @@
 #include "benchmarks/bench_frames.h"
 #include "perception/appearance.h"
 #include "perception/ceiling_detector.h"
+#include "perception/end_wall_detector.h"
 #include "perception/line_segments.h"
 #include "pipeline/recover_depth.h"
 
@@ -89,6 +91,21 @@ void Ceiling(benchmark::State& state, int width, int height) {
       1000 * std::abs(estimate.height - input.frame.truth.ceiling_height);
 }
 
+// The end-wall search on the frame's true geometry (the paper-like corridor goes on beyond range:
+// this is the cost of looking and finding nothing, the usual case).
+void EndWall(benchmark::State& state, int width, int height) {
+  cv::setNumThreads(1);
+  const bench::BenchFrame& input = bench::PaperLikeFrame(width, height);
+  const EndWallDetectorOptions options;
+  EndWallEstimate estimate;
+  for (auto _ : state) {
+    const Status status =
+        DetectEndWall(input.frame.bgr, input.camera, input.frame.truth, options, &estimate);
+    benchmark::DoNotOptimize(status);
+  }
+  state.counters["found"] = estimate.found;
+}
+
 // The solvers' input: the detected junctions of the frame.
 bool DetectedObservation(const bench::BenchFrame& input, CorridorObservation* observation) {
   JunctionPair pair;
@@ -151,6 +168,8 @@ const bool registered = [] {
     benchmark::RegisterBenchmark(("Stages/appearance" + suffix).c_str(), Appearance, w, h)
         ->Unit(benchmark::kMicrosecond);
     benchmark::RegisterBenchmark(("Stages/ceiling" + suffix).c_str(), Ceiling, w, h)
+        ->Unit(benchmark::kMicrosecond);
+    benchmark::RegisterBenchmark(("Stages/end_wall" + suffix).c_str(), EndWall, w, h)
         ->Unit(benchmark::kMicrosecond);
     for (const char* solver : {"grid", "closed_form", "lm", "closed_form+lm", "joint"}) {
       benchmark::RegisterBenchmark(("Stages/solve/" + std::string(solver) + suffix).c_str(), Solve,

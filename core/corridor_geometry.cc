@@ -8,8 +8,8 @@ std::string CorridorGeometry::ToString() const {
   char buffer[200];
   std::snprintf(buffer, sizeof(buffer),
                 "yaw=%.4f rad, pitch=%.4f rad, offset=%.3f m, width=%.3f m, h=%.3f m, "
-                "ceiling=%.3f m",
-                yaw, pitch, offset, width, camera_height, ceiling_height);
+                "ceiling=%.3f m, end wall=%.3f m",
+                yaw, pitch, offset, width, camera_height, ceiling_height, end_distance);
   return buffer;
 }
 

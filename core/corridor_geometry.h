@@ -12,10 +12,12 @@ struct CorridorGeometry {
   double width = 0.0;           // w = d_l + d_r.
   double camera_height = 0.0;   // h: optical centre above the floor.
   double ceiling_height = 0.0;  // H_c above the floor; 0 = unknown.
+  double end_distance = 0.0;    // Z_W of an end wall across the corridor (beyond the paper); 0 = none seen.
 
   double LeftDistance() const { return 0.5 * width + offset; }   // d_l
   double RightDistance() const { return 0.5 * width - offset; }  // d_r
   bool HasCeiling() const { return ceiling_height > camera_height; }
+  bool HasEndWall() const { return end_distance > 0; }
   std::string ToString() const;
 };
 

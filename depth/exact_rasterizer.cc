@@ -18,6 +18,8 @@ struct BoxModel {
   bool has_ceiling;          // Render the ceiling.
   float min_wall_y;          // Without a ceiling: wall points with Y_W below this get 0.
   float max_range;           // Depth cap.
+  float d_x, d_y, d_z;       // Corridor axis (for the end wall).
+  float end;                 // Z_W of the end wall, or +inf when there is none.
 
   // Depth of the ray (x, y, 1); 0 when no modelled surface is hit within range.
   float Depth(float x, float y) const {
@@ -37,6 +39,8 @@ struct BoxModel {
       const float zc = ceiling_y / nr;
       if (zc < z) z = zc, wall = false;
     }
+    const float dr = d_x * x + d_y * y + d_z;
+    if (dr > 0 && end / dr < z) z = end / dr, wall = true;  // The end wall hides what is beyond.
     if (!(z <= max_range)) return 0.0f;
     if (wall && !has_ceiling && z * nr < min_wall_y) return 0.0f;
     return z;
@@ -59,6 +63,12 @@ BoxModel MakeBoxModel(const CorridorGeometry& g, const RasterizerOptions& option
   box.ceiling_y = static_cast<float>(g.camera_height - g.ceiling_height);
   box.min_wall_y = static_cast<float>(g.camera_height - options.max_height);
   box.max_range = static_cast<float>(options.max_range);
+  const Vec3<double> d = r.Axis();
+  box.d_x = static_cast<float>(d.x);
+  box.d_y = static_cast<float>(d.y);
+  box.d_z = static_cast<float>(d.z);
+  box.end = g.HasEndWall() ? static_cast<float>(g.end_distance)
+                           : std::numeric_limits<float>::infinity();
   return box;
 }
 
@@ -101,14 +111,21 @@ Status ExactRasterizer::Render(const CorridorGeometry& geometry, const Camera& c
     if (box.has_ceiling && nr < 0) z_plane = box.ceiling_y / nr;
     const float mr0 = box.m_x * x0 + box.m_y * y + box.m_z;
     const float mr_step = box.m_x * inv_fx;
+    const float dr0 = box.d_x * x0 + box.d_y * y + box.d_z;  // The axis' d.r, affine in u too.
+    const float dr_step = box.d_x * inv_fx;
     // Without a ceiling, a wall point is kept only when z * nr >= min_wall_y.
     const bool cut_walls = !box.has_ceiling;
     for (int u = 0; u < camera.image_width; ++u) {
       const float mr = mr0 + mr_step * u;
       const float wall_distance = mr < 0 ? box.d_left : box.d_right;
       const float z_wall = wall_distance / std::abs(mr);  // +inf when the ray is parallel.
-      const bool wall = z_wall < z_plane;
-      const float z = wall ? z_wall : z_plane;
+      const bool side = z_wall < z_plane;
+      const float z_box = side ? z_wall : z_plane;
+      const float dr = dr0 + dr_step * u;
+      const float z_end = dr > 0 ? box.end / dr : inf;  // inf without an end wall.
+      const bool end = z_end < z_box;                   // The end wall hides what is beyond.
+      const bool wall = side | end;
+      const float z = end ? z_end : z_box;
       // Bitwise, not short-circuit, operators: no branches, so the loop vectorises.
       const bool too_high = cut_walls & wall & (z * nr < box.min_wall_y);
       out[u] = ((z <= box.max_range) & !too_high) ? z : 0.0f;

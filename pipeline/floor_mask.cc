@@ -9,7 +9,7 @@ namespace corridor {
 
 cv::Mat PredictFloorMask(const Camera& camera, const CorridorGeometry& g, double max_range) {
   const CorridorRotation<double> r(g.pitch, g.yaw);
-  const Vec3<double> n = r.FloorNormal(), m = r.WallNormal();
+  const Vec3<double> n = r.FloorNormal(), m = r.WallNormal(), d = r.Axis();
   cv::Mat mask(camera.image_height, camera.image_width, CV_8U, cv::Scalar(0));
   for (int v = 0; v < camera.image_height; ++v) {
     uchar* row = mask.ptr<uchar>(v);
@@ -22,7 +22,9 @@ cv::Mat PredictFloorMask(const Camera& camera, const CorridorGeometry& g, double
       const double z_wall = mr < 0   ? -g.LeftDistance() / mr
                             : mr > 0 ? g.RightDistance() / mr
                                      : std::numeric_limits<double>::infinity();
-      if (z_floor < z_wall && z_floor <= max_range) row[u] = 255;
+      // Floor beyond an end wall is hidden by it: its Z_W, z (d.r), is past the wall's.
+      const bool hidden = g.HasEndWall() && z_floor * Dot(d, ray) > g.end_distance;
+      if (z_floor < z_wall && z_floor <= max_range && !hidden) row[u] = 255;
     }
   }
   return mask;

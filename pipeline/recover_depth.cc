@@ -100,6 +100,8 @@ bool RecoverDepthOptions::Check(std::string* why) const {
     reason = "perception: " + reason;
   } else if (!ceiling.Check(&reason)) {
     reason = "ceiling: " + reason;
+  } else if (!end_wall.Check(&reason)) {
+    reason = "end_wall: " + reason;
   }
   if (reason.empty()) return true;
   if (why != nullptr) *why = reason;
@@ -233,6 +235,13 @@ Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* res
     if (result->ceiling.found) geometry.ceiling_height = result->ceiling.height;
   }
   result->times.ceiling = SecondsSince(stage);
+  stage = Clock::now();
+  if (options_.estimate_end_wall && !result->image.empty()) {
+    status = DetectEndWall(result->image, camera, geometry, options_.end_wall, &result->end_wall);
+    if (!status.ok()) return finish(status);
+    if (result->end_wall.found) geometry.end_distance = result->end_wall.distance;
+  }
+  result->times.end_wall = SecondsSince(stage);
   result->geometry = geometry;
   result->has_geometry = true;
 

@@ -12,6 +12,7 @@
 #include "estimation/corridor_observation.h"
 #include "estimation/solver.h"
 #include "perception/ceiling_detector.h"
+#include "perception/end_wall_detector.h"
 #include "perception/junction_detector.h"
 #include "perception/junction_lines.h"
 
@@ -35,6 +36,8 @@ struct RecoverDepthOptions {
   double ceiling_height = 0.0;             // Known ceiling height above the floor, m (0 = estimate or none).
   bool estimate_ceiling = true;            // Without a known height, look for the ceiling/wall junctions.
   CeilingDetectorOptions ceiling;          // Ceiling-height search (beyond the paper).
+  bool estimate_end_wall = true;           // Look for a wall across the corridor where both junctions end.
+  EndWallDetectorOptions end_wall;         // End-wall search (beyond the paper).
 
   bool Check(std::string* why) const;
 };
@@ -44,6 +47,7 @@ struct StageTimes {
   double perception = 0;  // Junction-line detection.
   double solve = 0;       // Geometry estimation.
   double ceiling = 0;     // Ceiling-height search.
+  double end_wall = 0;    // End-wall search.
   double rasterize = 0;   // Dense depth.
   double total = 0;       // The whole call.
 };
@@ -55,6 +59,7 @@ struct RecoverDepthResult {
   JunctionPair junctions;         // Both junction lines (raw pixels), as detected.
   SolverSummary solver_summary;   // What the solver reported.
   CeilingEstimate ceiling;        // The ceiling search (found = false when not run or not seen).
+  EndWallEstimate end_wall;       // The end-wall search (found = false when not run or not seen).
   cv::Mat image;                  // The frame as 8-bit BGR (set by Detect, used by Reconstruct).
   cv::Mat depth;                  // CV_32F metres, camera-frame z, 0 = no estimate.
   StageTimes times;               // Per-stage wall time.

@@ -30,6 +30,12 @@ void PutCaption(cv::Mat* image, const std::string& text, int row) {
               cv::LINE_AA);
 }
 
+std::string Metres(double value) {
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.2fm", value);
+  return text;
+}
+
 }  // namespace
 
 cv::Mat ColorizeDepth(const cv::Mat& depth, double max_depth) {
@@ -106,6 +112,11 @@ cv::Mat MakeResultPanel(const cv::Mat& bgr, const RecoverDepthResult& result, do
                   result.geometry.width, result.geometry.offset, result.geometry.yaw * 180 / M_PI,
                   result.geometry.pitch * 180 / M_PI);
     PutCaption(&lines, text, 0);
+    const CorridorGeometry& g = result.geometry;
+    std::string extent;
+    if (g.HasCeiling()) extent += "ceiling " + Metres(g.ceiling_height) + "  ";
+    if (g.HasEndWall()) extent += "end wall at " + Metres(g.end_distance);
+    if (!extent.empty()) PutCaption(&lines, extent, 1);
     std::snprintf(text, sizeof(text), "%.2f ms", result.times.total * 1e3);
     PutCaption(&depth_color, text, 0);
   } else {

@@ -7,7 +7,7 @@
 namespace corridor {
 namespace {
 
-constexpr char kHeader[] = "frame,status,yaw,pitch,offset,width,ceiling_height,seconds,stamp";
+constexpr char kHeader[] = "frame,status,yaw,pitch,offset,width,ceiling_height,end_distance,seconds,stamp";
 
 // The first field of a CSV row, unquoted as CsvField quotes it; false when it is malformed.
 bool FirstField(const std::string& row, std::string* field) {
@@ -49,9 +49,9 @@ void GeometryCsv::Add(const std::string& frame, const RecoverDepthResult& result
   }
   const CorridorGeometry& g = result.geometry;
   char numbers[256];
-  std::snprintf(numbers, sizeof(numbers), "%.6f,%.6f,%.4f,%.4f,%s,%.6f", g.yaw, g.pitch, g.offset,
-                g.width, g.HasCeiling() ? std::to_string(g.ceiling_height).c_str() : "",
-                result.times.total);
+  std::snprintf(numbers, sizeof(numbers), "%.6f,%.6f,%.4f,%.4f,%s,%s,%.6f", g.yaw, g.pitch,
+                g.offset, g.width, g.HasCeiling() ? std::to_string(g.ceiling_height).c_str() : "",
+                g.HasEndWall() ? std::to_string(g.end_distance).c_str() : "", result.times.total);
   rows_.push_back(CsvField(frame) + "," +
                   CsvField(result.status.ok() ? "ok" : result.status.ToString()) + "," + numbers +
                   "," + CsvField(stamp));
@@ -59,7 +59,7 @@ void GeometryCsv::Add(const std::string& frame, const RecoverDepthResult& result
 
 void GeometryCsv::AddFailure(const std::string& frame, const Status& status,
                             const std::string& stamp) {
-  rows_.push_back(CsvField(frame) + "," + CsvField(status.ToString()) + ",,,,,," + "," +
+  rows_.push_back(CsvField(frame) + "," + CsvField(status.ToString()) + ",,,,,,," + "," +
                   CsvField(stamp));
 }
 

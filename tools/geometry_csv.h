@@ -8,9 +8,9 @@
 
 namespace corridor {
 
-// geometry.csv: a header row, then `frame,status,yaw,pitch,offset,width,ceiling_height,seconds,
-// stamp` per frame; radians and metres with the signs of geometry.md; status "ok" or the error;
-// stamp "<sec>.<nsec>" for a ROS bag message; an unknown value is empty.
+// geometry.csv: a header row, then `frame,status,yaw,pitch,offset,width,ceiling_height,
+// end_distance,seconds,stamp` per frame; radians and metres with the signs of geometry.md; status
+// "ok" or the error; stamp "<sec>.<nsec>" for a ROS bag message; an unknown value is empty.
 class GeometryCsv {
  public:
   void Add(const std::string& frame, const RecoverDepthResult& result,

@@ -20,6 +20,9 @@ DEFINE_string(rasterizer, "exact", "Depth rasteriser: exact or paper");
 DEFINE_double(max_range, 40.0, "Depth beyond this gets no estimate, m");
 DEFINE_double(max_height, 2.5, "Without a ceiling, wall points higher than this get no estimate, m");
 DEFINE_double(ceiling_height, 0.0, "Known ceiling height above the floor, m (0 = unknown)");
+DEFINE_bool(end_wall, true,
+            "Look for a wall across the corridor where both junctions end, and close the depth "
+            "there (beyond the paper)");
 DEFINE_int32(points_per_line, 30, "Points sampled along each junction line for the solver");
 DEFINE_double(roi_top, 0.5, "Junction search region starts at this fraction of the image height");
 
@@ -32,6 +35,7 @@ Status RecoverDepthOptionsFromFlags(RecoverDepthOptions* options) {
   options->rasterizer_options.max_range = FLAGS_max_range;
   options->rasterizer_options.max_height = FLAGS_max_height;
   options->ceiling_height = FLAGS_ceiling_height;
+  options->estimate_end_wall = FLAGS_end_wall;
   options->points_per_line = FLAGS_points_per_line;
   options->perception.roi_top_fraction = FLAGS_roi_top;
   std::unique_ptr<DepthRecoverer> probe;

@@ -36,5 +36,40 @@ TEST(ExactVsGeneratorTest, PureBoxMatchesTheRayCaster) {
   }
 }
 
+// An end wall 10 m ahead (the generator's, at the corridor's length): with end_distance set, the
+// exact rasteriser closes the box there as the ray caster does.
+TEST(ExactVsGeneratorTest, PureBoxWithAnEndWallMatchesTheRayCaster) {
+  synth::SceneOptions scene;
+  scene.width = 2.2;
+  scene.ceiling_height = 2.6;
+  scene.length = 12;
+  scene.clutter = 0;
+  scene.door_density = 0;
+  const Camera camera = synth::PaperCamera(0.66);
+  for (const synth::CameraPose& pose :
+       {synth::CameraPose{0.06, 0.08, 0.15, 0.66, 2.0}, synth::CameraPose{0.0, -0.1, -0.2, 0.66, 4.5}}) {
+    synth::Frame frame;
+    ASSERT_TRUE(synth::RenderFrame(scene, camera, pose, &frame).ok());
+    cv::Mat truth;
+    frame.depth.convertTo(truth, CV_16U, 1000.0);
+    truth.convertTo(truth, CV_32F, 1e-3);
+    CorridorGeometry g = frame.truth;
+    g.end_distance = scene.length - pose.distance;  // Z_W of the end wall, by the scene's layout.
+    RasterizerOptions options;
+    options.max_range = 40;
+    cv::Mat with_wall, without_wall;
+    ASSERT_TRUE(ExactRasterizer(options).Render(g, camera, &with_wall).ok());
+    const DepthMetrics m = ComputeDepthMetrics(with_wall, truth, 40.0);
+    EXPECT_LT(m.abs_rel, 0.001);
+    EXPECT_DOUBLE_EQ(m.coverage, 1.0);
+    // The end wall covers a real part of the image, where the open box would be far off.
+    g.end_distance = 0;
+    ASSERT_TRUE(ExactRasterizer(options).Render(g, camera, &without_wall).ok());
+    const int changed = cv::countNonZero(cv::abs(with_wall - without_wall) > 0.01f);
+    EXPECT_GT(changed, 500);
+    EXPECT_GT(ComputeDepthMetrics(without_wall, truth, 40.0).abs_rel, 10 * m.abs_rel);
+  }
+}
+
 }  // namespace
 }  // namespace corridor

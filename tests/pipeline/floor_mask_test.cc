@@ -33,13 +33,14 @@ TEST(FloorMaskTest, IoUOnTheLabelledPhotos) {
   struct Labelled {
     const char* name;
     Camera camera;
-    double min_iou;  // Regression floor: measured 0.505, 0.742, 0.832, rounded down (issue 10 asks
-                     // for 0.75, 0.85, 0.75).
+    double min_iou;  // Measured 0.515, 0.941 (0.742 before the end wall), 0.832. Issue 10 asks
+                     // for 0.75, 0.85, 0.75: popup_2 and popup_3 meet it; popup_1 is held at a
+                     // regression floor (the open area behind its pillar is outside the box model).
   };
   const Labelled photos[] = {
       {"popup_1", PhotoCamera(640, 512, 371.975, 372.164, 315.632, 250.593), 0.5},
-      {"popup_2", PhotoCamera(640, 480, 570.342, 570.342, 319.5, 239.5), 0.7},
-      {"popup_3", PhotoCamera(640, 480, 570.342, 570.342, 319.5, 239.5), 0.8},
+      {"popup_2", PhotoCamera(640, 480, 570.342, 570.342, 319.5, 239.5), 0.85},
+      {"popup_3", PhotoCamera(640, 480, 570.342, 570.342, 319.5, 239.5), 0.75},
   };
   for (const auto& photo : photos) {
     const cv::Mat image = cv::imread(kDir + photo.name + ".png");
@@ -71,6 +72,35 @@ TEST(FloorMaskTest, TrueGeometryGivesTheGeneratorsFloor) {
     }
   }
   EXPECT_GT(MaskIoU(PredictFloorMask(preset.camera, g), truth), 0.97);
+}
+
+// With an end wall 8 m ahead, the floor stops there: the generator's floor pixels (true depth =
+// the floor's, by hand) are the prediction's.
+TEST(FloorMaskTest, AnEndWallEndsTheFloor) {
+  synth::SceneOptions scene;
+  scene.length = 10;
+  scene.clutter = 0;
+  scene.door_density = 0;
+  const Camera camera = synth::PaperCamera(0.66);
+  const synth::CameraPose pose{0.08, 0.05, 0.1, 0.66, 2.0};
+  synth::Frame frame;
+  ASSERT_TRUE(synth::RenderFrame(scene, camera, pose, &frame).ok());
+  CorridorGeometry g = frame.truth;
+  cv::Mat truth(frame.depth.size(), CV_8U, cv::Scalar(0));
+  for (int v = 0; v < truth.rows; ++v) {
+    for (int u = 0; u < truth.cols; ++u) {
+      const double y = (v - camera.cy) / camera.fy;
+      const double nr = std::cos(g.pitch) * y + std::sin(g.pitch);  // Floor normal (0, c, s).
+      const float z = frame.depth.at<float>(v, u);
+      if (nr > 0 && std::abs(z - g.camera_height / nr) < 1e-3 * z) truth.at<uchar>(v, u) = 255;
+    }
+  }
+  const double open = MaskIoU(PredictFloorMask(camera, g), truth);
+  g.end_distance = scene.length - pose.distance;
+  const double closed = MaskIoU(PredictFloorMask(camera, g), truth);
+  std::printf("floor IoU without the end wall %.3f, with it %.3f\n", open, closed);
+  EXPECT_GT(closed, 0.97);
+  EXPECT_GT(closed, open + 0.01);
 }
 
 }  // namespace
