@@ -150,6 +150,72 @@ JunctionLine Refine(const JunctionCandidate& candidate, const std::vector<cv::Po
   return out;
 }
 
+// The one visible junction when the other side has no candidate: the outermost line that looks
+// like the floor's edge, refined on its edge pixels, and where the other lines (grout, baseboards, other
+// wall lines along the corridor) meet it: the length-weighted median crossing above its support.
+void KeepSingleJunction(const std::vector<JunctionCandidate>& side, bool is_left,
+                        const std::vector<MergedLine>& lines, const std::vector<cv::Point>& edges,
+                        int roi_top, const JunctionDetectorOptions& options, int height,
+                        JunctionPair* result) {
+  // Among the lines with floor below and something else above, the outermost: grout lines and
+  // reflections lie inside the floor, baseboard tops and door bottoms have no floor below.
+  double best_boundary = 0;
+  for (const auto& c : side) best_boundary = std::max(best_boundary, c.boundary);
+  const auto bottom_u = [&](const MergedLine& l) {  // u where the line meets the bottom row.
+    return std::abs(l.line.x()) > 1e-9 ? -(l.line.y() * height + l.line.z()) / l.line.x() : 0.0;
+  };
+  size_t best = 0;
+  bool found = false;
+  for (size_t i = 0; i < side.size(); ++i) {
+    if (side[i].boundary < std::max(0.3, 0.5 * best_boundary)) continue;
+    const double u = bottom_u(side[i].line), best_u = bottom_u(side[best].line);
+    if (!found || (is_left ? u < best_u : u > best_u)) best = i;
+    found = true;
+  }
+  if (!found) return;  // No line looks like the floor's edge.
+  const MergedLine& m = side[best].line;
+  const Eigen::Vector2d top = m.start.y() < m.end.y() ? m.start : m.end;
+  result->single = Refine(side[best], edges, roi_top, top, is_left, options.support_distance_px,
+                          height);
+  result->single_is_left = is_left;
+  result->has_single = true;
+  // Crossings of the other lines with this one, above its support's far end.
+  const Eigen::Vector3d& l = result->single.line;
+  const Eigen::Vector2d direction(l.y(), -l.x());
+  const Eigen::Vector2d origin = -l.z() * l.head<2>();
+  const double far_t = (result->single.far_end - origin).dot(direction);
+  const double near_t = (result->single.near_end - origin).dot(direction);
+  const double up = far_t < near_t ? -1.0 : 1.0;  // Sign of t toward the far end.
+  std::vector<std::pair<double, double>> crossings;  // (t, weight)
+  double total = 0;
+  for (const MergedLine& other : lines) {
+    if (&other == &m || other.length < 0.5 * options.min_length_fraction * height) continue;
+    const Eigen::Vector3d x = l.cross(other.line);
+    if (std::abs(x.z()) < 1e-9) continue;
+    const Eigen::Vector2d p = x.head<2>() / x.z();
+    const double t = (p - origin).dot(direction);
+    if ((t - far_t) * up < -2.0) continue;  // Crosses on the support: not a vanishing point.
+    if (std::abs(l.head<2>().dot(other.line.head<2>())) > std::cos(5.0 * M_PI / 180)) continue;
+    crossings.emplace_back(t, other.length);
+    total += other.length;
+  }
+  if (crossings.size() < 2) return;
+  std::sort(crossings.begin(), crossings.end());
+  double running = 0, median = crossings.front().first;
+  for (const auto& [t, w] : crossings) {
+    running += w;
+    median = t;
+    if (running >= 0.5 * total) break;
+  }
+  // Most votes must agree (within 3% of the image height along the line).
+  int votes = 0;
+  for (const auto& [t, w] : crossings) votes += std::abs(t - median) < 0.03 * height;
+  if (votes < 2 || votes * 2 < static_cast<int>(crossings.size())) return;
+  result->single_vp = origin + median * direction;
+  result->single_has_vp = true;
+  result->single_vp_votes = votes;
+}
+
 Status NoCorridor(JunctionPair* result, const std::string& why) {
   result->status = Status::NoCorridorFound(why);
   return Status::Ok();
@@ -268,7 +334,14 @@ Status DetectJunctions(const cv::Mat& bgr, const JunctionDetectorOptions& option
     std::ostringstream msg;
     msg << "no " << (left.empty() ? "left" : "right") << " junction candidate among "
         << lines.size() << " lines";
-    return NoCorridor(result, msg.str());
+    const Status status = NoCorridor(result, msg.str());
+    if (!left.empty() || !right.empty()) {
+      std::vector<cv::Point> edge_pixels;
+      cv::findNonZero(found.edges, edge_pixels);
+      KeepSingleJunction(left.empty() ? right : left, left.empty() ? false : true, lines,
+                         edge_pixels, roi_top, options, height, result);
+    }
+    return status;
   }
   const SelectedPair pair = SelectJunctionPair(left, right, lines, Eigen::Vector2d(width, height));
   if (pair.left < 0) {

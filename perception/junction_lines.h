@@ -26,6 +26,15 @@ struct JunctionPair {
   JunctionLine right;             // The right floor/wall junction.
   Eigen::Vector2d vanishing_point = Eigen::Vector2d::Zero();  // Intersection of the two lines.
   std::vector<cv::Vec4f> segments;  // All Hough segments in the ROI (for drawing and debugging).
+
+  // When only one side has candidates (the other junction hidden or out of view): its best line,
+  // for a fallback with a known width. Never a made-up second line.
+  bool has_single = false;        // True when `single` holds the one visible junction.
+  bool single_is_left = false;    // Which side it is.
+  JunctionLine single;            // The line (raw pixels).
+  bool single_has_vp = false;     // True when other lines meet it at a vanishing point...
+  Eigen::Vector2d single_vp = Eigen::Vector2d::Zero();  // ... here (on the line).
+  int single_vp_votes = 0;        // How many lines voted for it.
 };
 
 // N points evenly spaced along the line between near_end and far_end (inclusive).

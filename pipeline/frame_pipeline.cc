@@ -27,10 +27,17 @@ int64_t FramePipeline::Run(const Source& source, const Sink& sink) {
   });
   int64_t delivered = 0;
   bool stopped = false;
+  // The last frame's geometry: when one junction is hidden, its width stands in.
+  CorridorGeometry previous;
+  bool has_previous = false;
   while (auto frame = queue.Pop()) {
     if (stopped) continue;  // Drain so that the extraction thread can finish.
-    if (frame->result.status.ok() && frame->camera != nullptr) {
-      recoverer_.Reconstruct(*frame->camera, &frame->result);
+    if (frame->result.ReadyToReconstruct() && frame->camera != nullptr) {
+      recoverer_.Reconstruct(*frame->camera, &frame->result, has_previous ? &previous : nullptr);
+      if (frame->result.status.ok()) {
+        previous = frame->result.geometry;
+        has_previous = true;
+      }
     }
     ++delivered;
     if (!sink(std::move(*frame))) {

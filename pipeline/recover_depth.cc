@@ -9,6 +9,7 @@
 
 #include "estimation/corridor_observation.h"
 #include "estimation/junction_line_residual.h"
+#include "pipeline/one_junction.h"
 
 namespace corridor {
 namespace {
@@ -94,6 +95,8 @@ bool RecoverDepthOptions::Check(std::string* why) const {
     reason = "max_abs_pitch must be in (0, pi/2)";
   } else if (!(max_line_error > 0 && std::isfinite(max_line_error))) {
     reason = "max_line_error must be positive and finite";
+  } else if (!(width_prior >= 0 && std::isfinite(width_prior))) {
+    reason = "width_prior must be >= 0 (0 = none)";
   } else if (!(ceiling_height >= 0 && std::isfinite(ceiling_height))) {
     reason = "ceiling_height must be >= 0 (0 = unknown)";
   } else if (!perception.Check(&reason)) {
@@ -177,7 +180,8 @@ Status DepthRecoverer::Create(const RecoverDepthOptions& options,
 Status DepthRecoverer::Recover(const cv::Mat& image, const Camera& camera,
                                RecoverDepthResult* result) const {
   const auto start = Clock::now();
-  if (Detect(image, camera, result).ok()) Reconstruct(camera, result);
+  Detect(image, camera, result);
+  if (result->ReadyToReconstruct()) Reconstruct(camera, result);
   result->times.total = SecondsSince(start);
   return result->status;
 }
@@ -203,31 +207,50 @@ Status DepthRecoverer::Detect(const cv::Mat& image, const Camera& camera,
   return finish(result->junctions.status);
 }
 
-Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* result) const {
+Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* result,
+                                   const CorridorGeometry* previous) const {
   const auto start = Clock::now();
   const auto finish = [&](Status status) {
     result->status = status;
     result->times.total = result->times.perception + SecondsSince(start);
     return status;
   };
-  if (!result->junctions.status.ok()) return finish(result->junctions.status);
   auto stage = Clock::now();
-  const CorridorObservation observation =
-      ObservationFromJunctions(result->junctions, camera, options_.points_per_line);
-  Status status = solver_->Solve(observation, nullptr, &result->solver_summary);
-  result->times.solve = SecondsSince(stage);
-  if (!status.ok()) {
-    if (status.code() == StatusCode::kInvalidArgument) {
-      status = Status::NoCorridorFound("junction lines unusable: " + status.message());
+  CorridorGeometry geometry;
+  Status status;
+  if (!result->junctions.status.ok()) {
+    // One junction hidden: with a known width (the previous frame's, else the option) the other
+    // wall follows; never a made-up second line. Otherwise the detector's reason stands.
+    if (!result->junctions.has_single) return finish(result->junctions.status);
+    const double width = previous != nullptr ? previous->width : options_.width_prior;
+    status = GeometryFromOneJunction(result->junctions, camera, width, previous, &geometry,
+                                     &result->fallback);
+    if (previous != nullptr && status.ok()) result->fallback += " (previous frame)";
+    result->times.solve = SecondsSince(stage);
+    if (!status.ok()) {
+      return finish(Status(status.code(), result->junctions.status.message() + "; " +
+                                              status.message()));
     }
-    return finish(status);
+    status = CheckPlausible(geometry, options_);
+    if (!status.ok()) return finish(status);
+  } else {
+    const CorridorObservation observation =
+        ObservationFromJunctions(result->junctions, camera, options_.points_per_line);
+    status = solver_->Solve(observation, nullptr, &result->solver_summary);
+    result->times.solve = SecondsSince(stage);
+    if (!status.ok()) {
+      if (status.code() == StatusCode::kInvalidArgument) {
+        status = Status::NoCorridorFound("junction lines unusable: " + status.message());
+      }
+      return finish(status);
+    }
+    geometry = result->solver_summary.estimate;
+    geometry.camera_height = camera.mount_height;
+    status = CheckPlausible(geometry, options_);
+    if (status.ok()) status = CheckLineFit(geometry, observation, camera, options_);
+    if (!status.ok()) return finish(status);
   }
-  CorridorGeometry geometry = result->solver_summary.estimate;
-  geometry.camera_height = camera.mount_height;
   geometry.ceiling_height = options_.ceiling_height;
-  status = CheckPlausible(geometry, options_);
-  if (status.ok()) status = CheckLineFit(geometry, observation, camera, options_);
-  if (!status.ok()) return finish(status);
   stage = Clock::now();
   if (options_.ceiling_height <= 0 && options_.estimate_ceiling && !result->image.empty()) {
     status = DetectCeiling(result->image, camera, geometry, options_.ceiling, &result->ceiling);

@@ -36,6 +36,7 @@ struct RecoverDepthOptions {
   double ceiling_height = 0.0;             // Known ceiling height above the floor, m (0 = estimate or none).
   bool estimate_ceiling = true;            // Without a known height, look for the ceiling/wall junctions.
   CeilingDetectorOptions ceiling;          // Ceiling-height search (beyond the paper).
+  double width_prior = 0.0;                // Width for frames where one junction is hidden, m (0 = none; a sequence uses the previous frame's).
   bool estimate_end_wall = true;           // Look for a wall across the corridor where both junctions end.
   EndWallDetectorOptions end_wall;         // End-wall search (beyond the paper).
 
@@ -60,6 +61,12 @@ struct RecoverDepthResult {
   SolverSummary solver_summary;   // What the solver reported.
   CeilingEstimate ceiling;        // The ceiling search (found = false when not run or not seen).
   EndWallEstimate end_wall;       // The end-wall search (found = false when not run or not seen).
+  std::string fallback;           // Non-empty when one junction and a known width gave the geometry: how.
+
+  // After Detect: both junctions were found, or only one (Reconstruct may then use a known width).
+  bool ReadyToReconstruct() const {
+    return status.ok() || (junctions.has_single && status.code() == StatusCode::kNoCorridorFound);
+  }
   cv::Mat image;                  // The frame as 8-bit BGR (set by Detect, used by Reconstruct).
   cv::Mat depth;                  // CV_32F metres, camera-frame z, 0 = no estimate.
   StageTimes times;               // Per-stage wall time.
@@ -83,7 +90,10 @@ class DepthRecoverer {
   // finds the junction lines (the edge-extraction thread); Reconstruct estimates the geometry
   // and rasterises the depth (the depth-recovery thread). Both return result->status.
   Status Detect(const cv::Mat& image, const Camera& camera, RecoverDepthResult* result) const;
-  Status Reconstruct(const Camera& camera, RecoverDepthResult* result) const;
+  // `previous` (may be null) is the previous frame's geometry in a sequence: when one junction is
+  // hidden, its width (and, without a vanishing point, its pitch) stands in.
+  Status Reconstruct(const Camera& camera, RecoverDepthResult* result,
+                     const CorridorGeometry* previous = nullptr) const;
 
   const RecoverDepthOptions& options() const { return options_; }
 

@@ -74,7 +74,18 @@ cv::Mat DrawJunctions(const cv::Mat& bgr, const JunctionPair& junctions) {
     cv::line(canvas, cv::Point(cvRound(s[0]), cvRound(s[1])), cv::Point(cvRound(s[2]), cvRound(s[3])),
              kSegmentColor, 1, cv::LINE_AA);
   }
-  if (!junctions.status.ok()) return canvas;
+  if (!junctions.status.ok()) {
+    // One junction only: draw it (towards its vanishing point when other lines gave one).
+    if (junctions.has_single) {
+      DrawLine(&canvas, junctions.single, junctions.single_vp, junctions.single_has_vp,
+               junctions.single_is_left ? kLeftColor : kRightColor);
+      if (junctions.single_has_vp) {
+        cv::drawMarker(canvas, ToPoint(junctions.single_vp), cv::Scalar(0, 255, 255),
+                       cv::MARKER_CROSS, 12, 2);
+      }
+    }
+    return canvas;
+  }
   DrawLine(&canvas, junctions.left, junctions.vanishing_point, true, kLeftColor);
   DrawLine(&canvas, junctions.right, junctions.vanishing_point, true, kRightColor);
   cv::drawMarker(canvas, ToPoint(junctions.vanishing_point), cv::Scalar(0, 255, 255),

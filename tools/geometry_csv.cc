@@ -53,7 +53,10 @@ void GeometryCsv::Add(const std::string& frame, const RecoverDepthResult& result
                 g.offset, g.width, g.HasCeiling() ? std::to_string(g.ceiling_height).c_str() : "",
                 g.HasEndWall() ? std::to_string(g.end_distance).c_str() : "", result.times.total);
   rows_.push_back(CsvField(frame) + "," +
-                  CsvField(result.status.ok() ? "ok" : result.status.ToString()) + "," + numbers +
+                  CsvField(!result.status.ok()        ? result.status.ToString()
+                           : result.fallback.empty() ? std::string("ok")
+                                                     : "ok: " + result.fallback) +
+                  "," + numbers +
                   "," + CsvField(stamp));
 }
 

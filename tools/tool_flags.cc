@@ -20,6 +20,9 @@ DEFINE_string(rasterizer, "exact", "Depth rasteriser: exact or paper");
 DEFINE_double(max_range, 40.0, "Depth beyond this gets no estimate, m");
 DEFINE_double(max_height, 2.5, "Without a ceiling, wall points higher than this get no estimate, m");
 DEFINE_double(ceiling_height, 0.0, "Known ceiling height above the floor, m (0 = unknown)");
+DEFINE_double(width_prior, 0.0,
+              "Corridor width for frames where one junction is hidden, m (0 = none; in a sequence "
+              "the previous frame's width is used)");
 DEFINE_bool(end_wall, true,
             "Look for a wall across the corridor where both junctions end, and close the depth "
             "there (beyond the paper)");
@@ -36,6 +39,7 @@ Status RecoverDepthOptionsFromFlags(RecoverDepthOptions* options) {
   options->rasterizer_options.max_height = FLAGS_max_height;
   options->ceiling_height = FLAGS_ceiling_height;
   options->estimate_end_wall = FLAGS_end_wall;
+  options->width_prior = FLAGS_width_prior;
   options->points_per_line = FLAGS_points_per_line;
   options->perception.roi_top_fraction = FLAGS_roi_top;
   std::unique_ptr<DepthRecoverer> probe;
