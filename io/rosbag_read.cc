@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <functional>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -192,12 +193,12 @@ Status UnpackImage(Unpacker* u, BagImage* image) {
   return DecodeCompressedImage(encoding, std::vector<uint8_t>(data.begin(), data.end()), &image->bgr);
 }
 
-}  // namespace
-
-Status ListBagTopics(const std::string& bag_path, std::vector<BagTopic>* topics) {
-  topics->clear();
-  std::unique_ptr<IsolatedChild> child;
-  Status status = IsolatedChild::Start(
+// Starts a child that opens the bag and runs `read` on it; a bag that does not open, or an
+// exception in `read` (prefixed by `what`), goes back as an 'E' record, the end as 'Z'.
+Status StartBagChild(const std::string& bag_path, const std::string& what,
+                     const std::function<bool(rosbag::Bag&, RecordWriter*)>& read,
+                     std::unique_ptr<IsolatedChild>* child) {
+  return IsolatedChild::Start(
       [&](RecordWriter* out) {
         rosbag::Bag bag;
         const Status opened = OpenForReading(bag_path, &bag);
@@ -206,22 +207,35 @@ Status ListBagTopics(const std::string& bag_path, std::vector<BagTopic>* topics)
           return;
         }
         try {
-          rosbag::View view(bag);
-          std::map<std::string, std::string> types;
-          for (const rosbag::ConnectionInfo* c : view.getConnections()) types[c->topic] = c->datatype;
-          for (const auto& [name, type] : types) {
-            Packer p;
-            p.Str(name);
-            p.Str(type);
-            p.U32(rosbag::View(bag, rosbag::TopicQuery(name)).size());
-            out->Write('T', p.out);
-          }
+          if (!read(bag, out)) return;
         } catch (const std::exception& e) {
-          SendStatus(Status::InvalidArgument(bag_path + ": cannot read the bag's index: " + e.what()),
-                     out);
+          SendStatus(Status::InvalidArgument(what + e.what()), out);
           return;
         }
         out->Write('Z', "");
+      },
+      child);
+}
+
+}  // namespace
+
+Status ListBagTopics(const std::string& bag_path, std::vector<BagTopic>* topics) {
+  topics->clear();
+  std::unique_ptr<IsolatedChild> child;
+  Status status = StartBagChild(
+      bag_path, bag_path + ": cannot read the bag's index: ",
+      [&](rosbag::Bag& bag, RecordWriter* out) {
+        rosbag::View view(bag);
+        std::map<std::string, std::string> types;
+        for (const rosbag::ConnectionInfo* c : view.getConnections()) types[c->topic] = c->datatype;
+        for (const auto& [name, type] : types) {
+          Packer p;
+          p.Str(name);
+          p.Str(type);
+          p.U32(rosbag::View(bag, rosbag::TopicQuery(name)).size());
+          out->Write('T', p.out);
+        }
+        return true;
       },
       &child);
   if (!status.ok()) return status;
@@ -301,36 +315,24 @@ Status ChooseBagTopics(const std::string& bag_path, const std::string& requested
 Status ReadBagCameraInfo(const std::string& bag_path, const std::string& info_topic,
                          Camera* camera, std::string* frame_id) {
   std::unique_ptr<IsolatedChild> child;
-  Status status = IsolatedChild::Start(
-      [&](RecordWriter* out) {
-        rosbag::Bag bag;
-        const Status opened = OpenForReading(bag_path, &bag);
-        if (!opened.ok()) {
-          SendStatus(opened, out);
-          return;
+  Status status = StartBagChild(
+      bag_path, bag_path + ": cannot read " + info_topic + ": ",
+      [&](rosbag::Bag& bag, RecordWriter* out) {
+        for (const rosbag::MessageInstance& m : rosbag::View(bag, rosbag::TopicQuery(info_topic))) {
+          const auto info = m.instantiate<sensor_msgs::CameraInfo>();
+          if (!info) continue;
+          Packer p;
+          p.U32(info->width);
+          p.U32(info->height);
+          for (double k : info->K) p.F64(k);
+          p.U32(static_cast<uint32_t>(info->D.size()));
+          for (double d : info->D) p.F64(d);
+          p.Str(info->distortion_model);
+          p.Str(info->header.frame_id);
+          out->Write('C', p.out);
+          break;
         }
-        try {
-          for (const rosbag::MessageInstance& m : rosbag::View(bag, rosbag::TopicQuery(info_topic))) {
-            const auto info = m.instantiate<sensor_msgs::CameraInfo>();
-            if (!info) continue;
-            Packer p;
-            p.U32(info->width);
-            p.U32(info->height);
-            for (double k : info->K) p.F64(k);
-            p.U32(static_cast<uint32_t>(info->D.size()));
-            for (double d : info->D) p.F64(d);
-            p.Str(info->distortion_model);
-            p.Str(info->header.frame_id);
-            out->Write('C', p.out);
-            break;
-          }
-        } catch (const std::exception& e) {
-          SendStatus(Status::InvalidArgument(bag_path + ": cannot read " + info_topic + ": " +
-                                             e.what()),
-                     out);
-          return;
-        }
-        out->Write('Z', "");
+        return true;
       },
       &child);
   if (!status.ok()) return status;
@@ -400,27 +402,15 @@ Status BagImageReader::Open(const std::string& bag_path, const std::string& imag
   impl->topic = image_topic;
   // The child opens the bag, says whether it could ('O' or 'E'), then sends every message of the
   // topic as an 'I' record, and 'Z' at the end (or 'E' when a message cannot be read).
-  Status status = IsolatedChild::Start(
-      [&](RecordWriter* out) {
-        rosbag::Bag bag;
-        const Status opened = OpenForReading(bag_path, &bag);
-        if (!opened.ok()) {
-          SendStatus(opened, out);
-          return;
+  Status status = StartBagChild(
+      bag_path, bag_path + " " + image_topic + ": corrupt message: ",
+      [&](rosbag::Bag& bag, RecordWriter* out) {
+        rosbag::View view(bag, rosbag::TopicQuery(image_topic));
+        if (!out->Write('O', "")) return false;
+        for (const rosbag::MessageInstance& m : view) {
+          if (!out->Write('I', PackImage(m))) return false;
         }
-        try {
-          rosbag::View view(bag, rosbag::TopicQuery(image_topic));
-          if (!out->Write('O', "")) return;
-          for (const rosbag::MessageInstance& m : view) {
-            if (!out->Write('I', PackImage(m))) return;
-          }
-        } catch (const std::exception& e) {
-          SendStatus(Status::InvalidArgument(bag_path + " " + image_topic + ": corrupt message: " +
-                                             e.what()),
-                     out);
-          return;
-        }
-        out->Write('Z', "");
+        return true;
       },
       &impl->child);
   if (!status.ok()) return status;
