@@ -18,7 +18,7 @@ constexpr double kBaseboardBand = 0.2;  // Wall points lower than this (m) are l
 // The box model's nearest surface at each pixel.
 cv::Mat SurfaceLabels(const Camera& camera, const CorridorGeometry& g) {
   const CorridorRotation<double> r(g.pitch, g.yaw);
-  const Vec3<double> n = r.FloorNormal(), m = r.WallNormal();
+  const Vec3<double> n = r.FloorNormal(), m = r.WallNormal(), d = r.Axis();
   cv::Mat floor(camera.image_height, camera.image_width, CV_8U);
   for (int v = 0; v < camera.image_height; ++v) {
     uchar* row = floor.ptr<uchar>(v);
@@ -31,7 +31,11 @@ cv::Mat SurfaceLabels(const Camera& camera, const CorridorGeometry& g) {
       const double z_ceiling = g.HasCeiling() && nr < 0
                                    ? (g.camera_height - g.ceiling_height) / nr
                                    : INFINITY;
-      if (z_floor < z_wall && z_floor < z_ceiling) {
+      const double dr = Dot(d, ray);
+      if (g.HasEndWall() && dr > 0 &&
+          g.end_distance / dr < std::min({z_floor, z_wall, z_ceiling})) {
+        row[u] = 0;  // The end wall: its own colour, not the side walls'.
+      } else if (z_floor < z_wall && z_floor < z_ceiling) {
         row[u] = kFloor;
       } else if (z_wall < z_ceiling && std::isfinite(z_wall)) {
         // Height of the wall point above the floor: h - Y_W, Y_W = z (n.r).
