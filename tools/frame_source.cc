@@ -97,18 +97,26 @@ class BagSource : public FrameSource {
 };
 #endif
 
+
+}  // namespace
+
 Status OpenVideo(const std::string& path, std::unique_ptr<cv::VideoCapture>* capture) {
   auto opened = std::make_unique<cv::VideoCapture>();
   bool ok = false;
-  // The backends OpenCV tries in turn log their own failures; the status names the file once.
+  // The file backends only (CAP_ANY would also probe cameras, and one of them leaks libusb's
+  // device list). They log their own failures; the status names the file once.
   const auto level = cv::utils::logging::setLogLevel(cv::utils::logging::LOG_LEVEL_SILENT);
   std::string error;
-  try {
-    ok = opened->open(path, cv::CAP_ANY);
-  } catch (const cv::Exception& e) {
-    error = e.what();
+  for (const int backend : {cv::CAP_FFMPEG, cv::CAP_GSTREAMER, cv::CAP_OPENCV_MJPEG}) {
+    try {
+      ok = opened->open(path, backend);
+    } catch (const cv::Exception& e) {
+      error = e.what();
+    }
+    if (ok && opened->isOpened()) break;
   }
   cv::utils::logging::setLogLevel(level);
+  if (ok && opened->isOpened()) error.clear();
   if (!error.empty()) return Status::InvalidArgument(path + ": cannot open the video: " + error);
   if (!ok || !opened->isOpened()) {
     return Status::InvalidArgument(path + ": cannot open the video (no OpenCV backend reads it, "
@@ -117,8 +125,6 @@ Status OpenVideo(const std::string& path, std::unique_ptr<cv::VideoCapture>* cap
   *capture = std::move(opened);
   return Status::Ok();
 }
-
-}  // namespace
 
 Status OpenFrameSource(const InputScene& scene, std::unique_ptr<FrameSource>* source) {
   switch (scene.kind) {

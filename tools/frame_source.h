@@ -3,6 +3,7 @@
 #include <memory>
 
 #include <opencv2/core.hpp>
+#include <opencv2/videoio.hpp>
 
 #include "core/status.h"
 #include "pipeline/frame_pipeline.h"
@@ -22,6 +23,10 @@ class FrameSource {
 // Opens the scene's frames: InvalidArgument/NotFound naming the bag or video when it cannot be
 // opened (a file list always opens; its unreadable files fail one by one).
 Status OpenFrameSource(const InputScene& scene, std::unique_ptr<FrameSource>* source);
+
+// Opens a video file with OpenCV's file backends (FFmpeg, GStreamer, its own MJPEG reader);
+// InvalidArgument naming the file when none reads it.
+Status OpenVideo(const std::string& path, std::unique_ptr<cv::VideoCapture>* capture);
 
 // The scene's first image, e.g. to size a camera from flags or to check a calibration; the status
 // of the first frame when it cannot be read.

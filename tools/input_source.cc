@@ -209,9 +209,11 @@ Status ResolveVideo(const std::string& input, const CameraOverrides& overrides,
   cv::Mat first;
   Status status = ReadFirstFrame(*scene, &first);  // Opens it: a clear error if it cannot.
   if (!status.ok()) return status;
-  cv::VideoCapture capture(input);
-  const double count = capture.get(cv::CAP_PROP_FRAME_COUNT);
-  const double fps = capture.get(cv::CAP_PROP_FPS);
+  std::unique_ptr<cv::VideoCapture> capture;
+  status = OpenVideo(input, &capture);
+  if (!status.ok()) return status;
+  const double count = capture->get(cv::CAP_PROP_FRAME_COUNT);
+  const double fps = capture->get(cv::CAP_PROP_FPS);
   scene->frame_count = count > 0 && std::isfinite(count) ? static_cast<int64_t>(count) : 0;
   if (fps > 0 && std::isfinite(fps)) scene->frame_period = 1.0 / fps;
   return FinishCamera(overrides, "", input, scene);
