@@ -5,6 +5,8 @@
 
 #include <cmath>
 
+#include "core/camera.h"
+
 namespace corridor {
 
 template <typename T>
@@ -49,5 +51,11 @@ struct CorridorRotation {
             m[0][2] * c.x + m[1][2] * c.y + m[2][2] * c.z};
   }
 };
+
+// The normalised ray (x, y, 1) of a raw image pixel, lens distortion removed.
+inline Vec3<double> RayOfRawPixel(const Camera& camera, double u, double v) {
+  const Eigen::Vector2d ideal = camera.Undistort({u, v});
+  return {(ideal.x() - camera.cx) / camera.fx, (ideal.y() - camera.cy) / camera.fy, 1.0};
+}
 
 }  // namespace corridor

@@ -1,5 +1,7 @@
 #include "depth/ray_table.h"
 
+#include "core/corridor_frame.h"
+
 namespace corridor {
 
 RayTable::RayTable(const Camera& camera)
@@ -9,9 +11,9 @@ RayTable::RayTable(const Camera& camera)
   y_.resize(n);
   for (int v = 0; v < height_; ++v) {
     for (int u = 0; u < width_; ++u) {
-      const Eigen::Vector2d ideal = camera.Undistort(Eigen::Vector2d(u, v));
-      x_[static_cast<size_t>(v) * width_ + u] = static_cast<float>((ideal.x() - camera.cx) / camera.fx);
-      y_[static_cast<size_t>(v) * width_ + u] = static_cast<float>((ideal.y() - camera.cy) / camera.fy);
+      const Vec3<double> ray = RayOfRawPixel(camera, u, v);
+      x_[static_cast<size_t>(v) * width_ + u] = static_cast<float>(ray.x);
+      y_[static_cast<size_t>(v) * width_ + u] = static_cast<float>(ray.y);
     }
   }
 }

@@ -168,9 +168,7 @@ Status DetectCeiling(const cv::Mat& bgr, const Camera& camera, const CorridorGeo
       for (int dv = -2; dv <= 2; ++dv) {
         const int v = p.y + dv;
         if (v < band_top || v >= band_bottom || edges.at<uchar>(v - band_top, p.x) == 0) continue;
-        const Eigen::Vector2d ideal = camera.Undistort({static_cast<double>(p.x), static_cast<double>(v)});
-        const Vec3<double> ray{(ideal.x() - camera.cx) / camera.fx,
-                               (ideal.y() - camera.cy) / camera.fy, 1.0};
+        const Vec3<double> ray = RayOfRawPixel(camera, p.x, v);
         const double mr = Dot(m, ray);
         if (std::abs(mr) < 1e-9) continue;
         const double z = wall_x / mr;  // The ray meets its wall plane X = wall_x at depth z.

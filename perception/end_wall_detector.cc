@@ -256,10 +256,7 @@ Status DetectEndWall(const cv::Mat& full_bgr, const Camera& full_camera, const C
     for (int dv = -o.reach_px - 1; dv <= o.reach_px + 1; ++dv) {
       const int v = p.y + dv;
       if (v < 0 || v >= edges.rows || edges.at<uchar>(v, p.x) == 0) continue;
-      const Eigen::Vector2d ideal =
-          camera.Undistort({static_cast<double>(p.x), static_cast<double>(v)});
-      const Vec3<double> ray{(ideal.x() - camera.cx) / camera.fx,
-                             (ideal.y() - camera.cy) / camera.fy, 1.0};
+      const Vec3<double> ray = RayOfRawPixel(camera, p.x, v);
       const double nr = Dot(n, ray);
       if (nr <= 1e-9) continue;
       distances.push_back(h / nr * Dot(axis, ray));  // Z_W of the ray's floor point.

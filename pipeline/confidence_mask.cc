@@ -23,8 +23,7 @@ cv::Mat SurfaceLabels(const Camera& camera, const CorridorGeometry& g) {
   for (int v = 0; v < camera.image_height; ++v) {
     uchar* row = floor.ptr<uchar>(v);
     for (int u = 0; u < camera.image_width; ++u) {
-      const Eigen::Vector2d ideal = camera.Undistort({static_cast<double>(u), static_cast<double>(v)});
-      const Vec3<double> ray{(ideal.x() - camera.cx) / camera.fx, (ideal.y() - camera.cy) / camera.fy, 1};
+      const Vec3<double> ray = RayOfRawPixel(camera, u, v);
       const double nr = Dot(n, ray), mr = Dot(m, ray);
       const double z_floor = nr > 0 ? g.camera_height / nr : INFINITY;
       const double z_wall = mr < 0 ? -g.LeftDistance() / mr : (mr > 0 ? g.RightDistance() / mr : INFINITY);

@@ -14,8 +14,7 @@ cv::Mat PredictFloorMask(const Camera& camera, const CorridorGeometry& g, double
   for (int v = 0; v < camera.image_height; ++v) {
     uchar* row = mask.ptr<uchar>(v);
     for (int u = 0; u < camera.image_width; ++u) {
-      const Eigen::Vector2d p = camera.Undistort({static_cast<double>(u), static_cast<double>(v)});
-      const Vec3<double> ray{(p.x() - camera.cx) / camera.fx, (p.y() - camera.cy) / camera.fy, 1};
+      const Vec3<double> ray = RayOfRawPixel(camera, u, v);
       const double nr = Dot(n, ray), mr = Dot(m, ray);
       if (nr <= 0) continue;
       const double z_floor = g.camera_height / nr;

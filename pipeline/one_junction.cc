@@ -8,15 +8,6 @@
 #include "core/corridor_frame.h"
 
 namespace corridor {
-namespace {
-
-// The ideal (undistorted) normalised ray of a raw pixel.
-Vec3<double> RayOf(const Camera& camera, const Eigen::Vector2d& raw) {
-  const Eigen::Vector2d p = camera.Undistort(raw);
-  return {(p.x() - camera.cx) / camera.fx, (p.y() - camera.cy) / camera.fy, 1.0};
-}
-
-}  // namespace
 
 Status GeometryFromOneJunction(const JunctionPair& pair, const Camera& camera, double width,
                                const CorridorGeometry* prior, CorridorGeometry* geometry,
@@ -33,14 +24,15 @@ Status GeometryFromOneJunction(const JunctionPair& pair, const Camera& camera, d
   char text[160];
   if (pair.single_has_vp) {
     // d ~ K^-1 vp = (sin yaw, -sin pitch cos yaw, cos pitch cos yaw).
-    const Vec3<double> d = RayOf(camera, pair.single_vp);
+    const Vec3<double> d = RayOfRawPixel(camera, pair.single_vp.x(), pair.single_vp.y());
     pitch = std::atan2(-d.y, d.z);
     yaw = std::atan2(d.x, std::hypot(d.y, d.z));
     std::snprintf(text, sizeof(text), "vanishing point from %d lines", pair.single_vp_votes);
   } else if (prior != nullptr) {
     // The vanishing point lies on the junction and on the row of the previous pitch.
     pitch = prior->pitch;
-    const Vec3<double> a = RayOf(camera, line.near_end), b = RayOf(camera, line.far_end);
+    const Vec3<double> a = RayOfRawPixel(camera, line.near_end.x(), line.near_end.y());
+    const Vec3<double> b = RayOfRawPixel(camera, line.far_end.x(), line.far_end.y());
     const double y_vp = -std::tan(pitch);  // Normalised y of every direction with this pitch.
     if (std::abs(b.y - a.y) < 1e-9) return Status::NoCorridorFound("the junction is horizontal");
     const double x_vp = a.x + (b.x - a.x) * (y_vp - a.y) / (b.y - a.y);
@@ -56,7 +48,7 @@ Status GeometryFromOneJunction(const JunctionPair& pair, const Camera& camera, d
   const Vec3<double> n = r.FloorNormal();
   std::vector<double> xs;
   for (const Eigen::Vector2d& p : SampleAlongLine(line, 30)) {
-    const Vec3<double> ray = RayOf(camera, p);
+    const Vec3<double> ray = RayOfRawPixel(camera, p.x(), p.y());
     const double nr = Dot(n, ray);
     if (nr <= 1e-6) continue;
     const double z = camera.mount_height / nr;
