@@ -7,6 +7,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "core/corridor_frame.h"
+#include "perception/corridor_projection.h"
 
 namespace corridor {
 namespace {
@@ -14,21 +15,6 @@ namespace {
 // Rows of edges computed beyond the band the lines cross, so that the blur and Canny's gradients
 // and hysteresis see nearly the neighbourhood they would see over the whole image.
 constexpr int kBandMargin = 8;
-
-// Raw pixel of a corridor-frame point, or false when it is behind the camera or off the image.
-// `distorted`: camera.HasDistortion(), hoisted out of the search's loops.
-bool ProjectToImage(const Camera& camera, bool distorted, const CorridorRotation<double>& r,
-                    double x, double y, double z, cv::Point* pixel) {
-  const Vec3<double> c = r.ToCamera({x, y, z});
-  if (c.z < 0.05) return false;
-  const Eigen::Vector2d ideal = camera.Project({c.x, c.y, c.z});
-  const Eigen::Vector2d raw = distorted ? camera.Distort(ideal) : ideal;
-  if (!raw.allFinite()) return false;
-  pixel->x = cvRound(raw.x());
-  pixel->y = cvRound(raw.y());
-  return pixel->x >= 1 && pixel->y >= 1 && pixel->x < camera.image_width - 1 &&
-         pixel->y < camera.image_height - 1;
-}
 
 // The pixels of every searched line: for each height, the left then the right ceiling/wall
 // junction, each as `samples` points evenly spaced in inverse distance along the corridor.
@@ -69,7 +55,7 @@ void ProjectSearchLines(const Camera& camera, const CorridorGeometry& g,
       for (int i = 0; i < o.samples; ++i, ++out) {
         cv::Point p;
         const double y = h - height;  // Corridor Y of the ceiling (negative: above the camera).
-        if (!ProjectToImage(camera, distorted, r, wall_x[side], y, depths[i], &p)) continue;
+        if (!ProjectCorridorPoint(camera, distorted, r, wall_x[side], y, depths[i], 1, &p)) continue;
         *out = p;
         lines->top = std::min(lines->top, p.y);
         lines->bottom = std::max(lines->bottom, p.y);

@@ -7,6 +7,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "core/corridor_frame.h"
+#include "perception/corridor_projection.h"
 #include "perception/appearance.h"
 #include "perception/color_gradient.h"
 
@@ -17,20 +18,13 @@ namespace {
 class EdgeProbe {
  public:
   EdgeProbe(const cv::Mat& edges, const Camera& camera, const CorridorGeometry& g, int reach)
-      : camera_(camera), r_(g.pitch, g.yaw), reach_(reach) {
+      : camera_(camera), distorted_(camera.HasDistortion()), r_(g.pitch, g.yaw), reach_(reach) {
     cv::dilate(edges, near_, cv::Mat::ones(2 * reach + 1, 2 * reach + 1, CV_8U));
   }
 
-  // Raw pixel of (x, y, z), or false when behind the camera or off the image (1 px margin).
+  // Raw pixel of (x, y, z), or false when behind the camera or within `reach` of the border.
   bool Project(double x, double y, double z, cv::Point* pixel) const {
-    const Vec3<double> c = r_.ToCamera({x, y, z});
-    if (c.z < 0.05) return false;
-    const Eigen::Vector2d raw = camera_.Distort(camera_.Project({c.x, c.y, c.z}));
-    if (!raw.allFinite()) return false;
-    pixel->x = cvRound(raw.x());
-    pixel->y = cvRound(raw.y());
-    return pixel->x >= reach_ && pixel->y >= reach_ && pixel->x < camera_.image_width - reach_ &&
-           pixel->y < camera_.image_height - reach_;
+    return ProjectCorridorPoint(camera_, distorted_, r_, x, y, z, reach_, pixel);
   }
 
   // An edge pixel within `reach` px of p (in each direction): one look-up in the dilated map.
@@ -64,6 +58,7 @@ class EdgeProbe {
  private:
   cv::Mat near_;  // The edge map dilated by `reach`.
   const Camera& camera_;
+  bool distorted_;  // camera_.HasDistortion().
   CorridorRotation<double> r_;
   int reach_;  // px.
 };
