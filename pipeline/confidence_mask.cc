@@ -8,6 +8,7 @@
 
 #include "core/corridor_frame.h"
 #include "perception/appearance.h"
+#include "pipeline/box_surface.h"
 
 namespace corridor {
 namespace {
@@ -17,30 +18,20 @@ constexpr double kBaseboardBand = 0.2;  // Wall points lower than this (m) are l
 
 // The box model's nearest surface at each pixel.
 cv::Mat SurfaceLabels(const Camera& camera, const CorridorGeometry& g) {
-  const CorridorRotation<double> r(g.pitch, g.yaw);
-  const Vec3<double> n = r.FloorNormal(), m = r.WallNormal(), d = r.Axis();
+  const BoxFrame box(g);
   cv::Mat floor(camera.image_height, camera.image_width, CV_8U);
   for (int v = 0; v < camera.image_height; ++v) {
     uchar* row = floor.ptr<uchar>(v);
     for (int u = 0; u < camera.image_width; ++u) {
       const Vec3<double> ray = RayOfRawPixel(camera, u, v);
-      const double nr = Dot(n, ray), mr = Dot(m, ray);
-      const double z_floor = nr > 0 ? g.camera_height / nr : INFINITY;
-      const double z_wall = mr < 0 ? -g.LeftDistance() / mr : (mr > 0 ? g.RightDistance() / mr : INFINITY);
-      const double z_ceiling = g.HasCeiling() && nr < 0
-                                   ? (g.camera_height - g.ceiling_height) / nr
-                                   : INFINITY;
-      const double dr = Dot(d, ray);
-      if (g.HasEndWall() && dr > 0 &&
-          g.end_distance / dr < std::min({z_floor, z_wall, z_ceiling})) {
-        row[u] = 0;  // The end wall: its own colour, not the side walls'.
-      } else if (z_floor < z_wall && z_floor < z_ceiling) {
+      const BoxHit hit = FirstBoxSurface(box, ray);
+      if (hit.surface == BoxSurface::kFloor) {
         row[u] = kFloor;
-      } else if (z_wall < z_ceiling && std::isfinite(z_wall)) {
+      } else if (hit.surface == BoxSurface::kWall) {
         // Height of the wall point above the floor: h - Y_W, Y_W = z (n.r).
-        row[u] = g.camera_height - z_wall * nr > kBaseboardBand ? kWall : 0;
+        row[u] = g.camera_height - hit.z * Dot(box.n, ray) > kBaseboardBand ? kWall : 0;
       } else {
-        row[u] = 0;
+        row[u] = 0;  // Ceiling, end wall (its own colour, not the side walls'), or nothing.
       }
     }
   }

@@ -4,26 +4,19 @@
 #include <limits>
 
 #include "core/corridor_frame.h"
+#include "pipeline/box_surface.h"
 
 namespace corridor {
 
 cv::Mat PredictFloorMask(const Camera& camera, const CorridorGeometry& g, double max_range) {
-  const CorridorRotation<double> r(g.pitch, g.yaw);
-  const Vec3<double> n = r.FloorNormal(), m = r.WallNormal(), d = r.Axis();
+  const BoxFrame box(g);
   cv::Mat mask(camera.image_height, camera.image_width, CV_8U, cv::Scalar(0));
   for (int v = 0; v < camera.image_height; ++v) {
     uchar* row = mask.ptr<uchar>(v);
     for (int u = 0; u < camera.image_width; ++u) {
-      const Vec3<double> ray = RayOfRawPixel(camera, u, v);
-      const double nr = Dot(n, ray), mr = Dot(m, ray);
-      if (nr <= 0) continue;
-      const double z_floor = g.camera_height / nr;
-      const double z_wall = mr < 0   ? -g.LeftDistance() / mr
-                            : mr > 0 ? g.RightDistance() / mr
-                                     : std::numeric_limits<double>::infinity();
-      // Floor beyond an end wall is hidden by it: its Z_W, z (d.r), is past the wall's.
-      const bool hidden = g.HasEndWall() && z_floor * Dot(d, ray) > g.end_distance;
-      if (z_floor < z_wall && z_floor <= max_range && !hidden) row[u] = 255;
+      // Floor hidden by a wall or an end wall is not floor in the image.
+      const BoxHit hit = FirstBoxSurface(box, RayOfRawPixel(camera, u, v));
+      if (hit.surface == BoxSurface::kFloor && hit.z <= max_range) row[u] = 255;
     }
   }
   return mask;
