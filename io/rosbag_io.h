@@ -47,10 +47,10 @@ bool IsImageTopicType(const std::string& type);
 // `requested_info` empty: "<namespace>/camera_info" beside the image topic (a trailing
 // "/compressed" is dropped first), else the bag's only CameraInfo topic, else none (*info = "").
 // A requested topic that is not in the bag, or has another type, is an error that lists the
-// bag's topics.
+// bag's topics. `image_messages` (may be null) gets the image topic's message count.
 Status ChooseBagTopics(const std::string& bag_path, const std::string& requested_image,
                        const std::string& requested_info, std::string* image_topic,
-                       std::string* info_topic);
+                       std::string* info_topic, uint32_t* image_messages = nullptr);
 
 // The camera of the first CameraInfo message on `info_topic`: K, the image size and plumb_bob
 // distortion (an empty or all-zero D = none; another distortion model is an error naming it).

@@ -262,7 +262,7 @@ Status ListBagTopics(const std::string& bag_path, std::vector<BagTopic>* topics)
 
 Status ChooseBagTopics(const std::string& bag_path, const std::string& requested_image,
                        const std::string& requested_info, std::string* image_topic,
-                       std::string* info_topic) {
+                       std::string* info_topic, uint32_t* image_messages) {
   std::vector<BagTopic> topics;
   Status status = ListBagTopics(bag_path, &topics);
   if (!status.ok()) return status;
@@ -288,6 +288,7 @@ Status ChooseBagTopics(const std::string& bag_path, const std::string& requested
     }
     *image_topic = images.front();
   }
+  if (image_messages != nullptr) *image_messages = FindTopic(topics, *image_topic)->messages;
   info_topic->clear();
   if (!requested_info.empty()) {
     const BagTopic* t = FindTopic(topics, requested_info);

@@ -160,15 +160,11 @@ Status ResolveBag(const std::string& input, const CameraOverrides& overrides,
   scene->name = fs::path(input).stem().string();
 #ifdef CORRIDOR_HAVE_ROSBAG
   std::string info_topic;
+  uint32_t messages = 0;
   Status status = ChooseBagTopics(input, topics.image_topic, topics.camera_info_topic,
-                                  &scene->image_topic, &info_topic);
+                                  &scene->image_topic, &info_topic, &messages);
   if (!status.ok()) return status;
-  std::vector<BagTopic> all;
-  status = ListBagTopics(input, &all);
-  if (!status.ok()) return status;
-  for (const auto& t : all) {
-    if (t.name == scene->image_topic) scene->frame_count = t.messages;
-  }
+  scene->frame_count = messages;
   const std::string where = input + " " + scene->image_topic;
   if (CameraFromCommandLine(overrides)) return FinishCamera(overrides, "", where, scene);
   if (info_topic.empty()) {
