@@ -8,13 +8,10 @@
 
 #include "core/corridor_frame.h"
 #include "perception/corridor_projection.h"
+#include "perception/oriented_edges.h"
 
 namespace corridor {
 namespace {
-
-// Rows of edges computed beyond the band the lines cross, so that the blur and Canny's gradients
-// and hysteresis see nearly the neighbourhood they would see over the whole image.
-constexpr int kBandMargin = 8;
 
 // The pixels of every searched line: for each height, the left then the right ceiling/wall
 // junction, each as `samples` points evenly spaced in inverse distance along the corridor.
@@ -64,18 +61,6 @@ void ProjectSearchLines(const Camera& camera, const CorridorGeometry& g,
   }
 }
 
-// Fraction of the line's visible samples that have an edge pixel within 1 px (`near_edges`: the
-// edges dilated by 3x3, rows from `band_top`); 0 with fewer than 8 visible samples.
-double LineSupport(const cv::Point* line, int samples, const cv::Mat& near_edges, int band_top) {
-  int visible = 0, hits = 0;
-  for (int i = 0; i < samples; ++i) {
-    if (line[i].x < 0) continue;
-    ++visible;
-    hits += near_edges.ptr<uchar>(line[i].y - band_top)[line[i].x] != 0;
-  }
-  return visible >= 8 ? static_cast<double>(hits) / visible : 0.0;
-}
-
 }  // namespace
 
 bool CeilingDetectorOptions::Check(std::string* why) const {
@@ -107,24 +92,14 @@ Status DetectCeiling(const cv::Mat& bgr, const Camera& camera, const CorridorGeo
     estimate->reason = "no ceiling/wall junction follows the image's edges";
     return Status::Ok();
   }
-  const int band_top = std::max(0, lines.top - 2 - kBandMargin);
-  const int band_bottom = std::min(bgr.rows, lines.bottom + 3 + kBandMargin);
-  const cv::Mat band = bgr.rowRange(band_top, band_bottom);
-  cv::Mat gray, edges, near_edges;
-  if (bgr.channels() == 1) {
-    gray = band.clone();
-  } else {
-    cv::cvtColor(band, gray, cv::COLOR_BGR2GRAY);
-  }
-  cv::GaussianBlur(gray, gray, cv::Size(0, 0), 1.0);
-  cv::Canny(gray, edges, 20, 60, 3, true);
-  cv::dilate(edges, near_edges, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(3, 3)));
+  const OrientedEdges edges = ComputeOrientedEdges(bgr, lines.top - 2, lines.bottom + 3);
+  const int band_top = edges.top, band_bottom = edges.top + edges.edges.rows;
 
   double best_score = 0, best_left = 0, best_right = 0;
   size_t best = 0;
   for (size_t k = 0; k < lines.heights.size(); ++k) {
-    const double left = LineSupport(lines.Line(k, 0), lines.samples, near_edges, band_top);
-    const double right = LineSupport(lines.Line(k, 1), lines.samples, near_edges, band_top);
+    const double left = OrientedLineSupport(lines.Line(k, 0), lines.samples, edges);
+    const double right = OrientedLineSupport(lines.Line(k, 1), lines.samples, edges);
     const double score = left + right;
     if (score > best_score) {
       best_score = score;
@@ -153,7 +128,8 @@ Status DetectCeiling(const cv::Mat& bgr, const Camera& camera, const CorridorGeo
       if (p.x < 0) continue;
       for (int dv = -2; dv <= 2; ++dv) {
         const int v = p.y + dv;
-        if (v < band_top || v >= band_bottom || edges.at<uchar>(v - band_top, p.x) == 0) continue;
+        if (v < band_top || v >= band_bottom) continue;
+        if (edges.edges.at<uchar>(v - band_top, p.x) == 0) continue;
         const Vec3<double> ray = RayOfRawPixel(camera, p.x, v);
         const double mr = Dot(m, ray);
         if (std::abs(mr) < 1e-9) continue;

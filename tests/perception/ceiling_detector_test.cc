@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <opencv2/imgproc.hpp>
 
+#include "core/corridor_frame.h"
 #include "synth/corridor_renderer.h"
 #include "synth/presets.h"
 
@@ -29,6 +30,43 @@ TEST(CeilingDetectorTest, FindsTheCeilingHeightOfGeneratedCorridors) {
     ++checked;
   }
   EXPECT_EQ(checked, 6);
+}
+
+// A green wall under a grey ceiling of the same brightness: the junction is a colour edge only.
+TEST(CeilingDetectorTest, FindsAColourOnlyCeilingJunction) {
+  const synth::ScenePreset preset = synth::PaperPreset().front();
+  synth::CorridorScene scene = synth::BuildScene(preset.scene);
+  scene.wall_color = cv::Vec3f(0.50f, 0.72f, 0.52f);  // BGR: green.
+  const float luma = 0.114f * 0.50f + 0.587f * 0.72f + 0.299f * 0.52f;
+  scene.ceiling_color = cv::Vec3f(luma, luma, luma);
+  synth::Frame frame;
+  ASSERT_TRUE(synth::RenderFrame(scene, preset.camera, preset.poses[4], &frame).ok());
+  // The test means something only if grey levels hardly change across the true junction.
+  cv::Mat gray;
+  cv::cvtColor(frame.bgr, gray, cv::COLOR_BGR2GRAY);
+  const CorridorGeometry& g = frame.truth;
+  const CorridorRotation<double> r(g.pitch, g.yaw);
+  const double y = g.camera_height - preset.scene.ceiling_height;
+  double step = 0;
+  int visible = 0;
+  for (const double z : {4.0, 6.0, 8.0, 10.0}) {
+    // Just inside the ceiling, then just down the wall, 10 cm from the junction.
+    const Vec3<double> ceiling = r.ToCamera({-g.LeftDistance() + 0.1, y, z});
+    const Vec3<double> wall = r.ToCamera({-g.LeftDistance(), y + 0.1, z});
+    const Eigen::Vector2d a = preset.camera.Project({ceiling.x, ceiling.y, ceiling.z});
+    const Eigen::Vector2d b = preset.camera.Project({wall.x, wall.y, wall.z});
+    const cv::Rect image(0, 0, gray.cols, gray.rows);
+    const cv::Point pa(cvRound(a.x()), cvRound(a.y())), pb(cvRound(b.x()), cvRound(b.y()));
+    if (!image.contains(pa) || !image.contains(pb)) continue;
+    step += std::abs(gray.at<uchar>(pa) - gray.at<uchar>(pb));
+    ++visible;
+  }
+  ASSERT_GE(visible, 3);
+  EXPECT_LT(step / visible, 12.0) << "the grey step should be small";
+  CeilingEstimate estimate;
+  ASSERT_TRUE(DetectCeiling(frame.bgr, preset.camera, g, CeilingDetectorOptions(), &estimate).ok());
+  ASSERT_TRUE(estimate.found) << estimate.reason;
+  EXPECT_NEAR(estimate.height, preset.scene.ceiling_height, 0.03 * preset.scene.ceiling_height);
 }
 
 TEST(CeilingDetectorTest, NoCeilingInAFeaturelessUpperImage) {

@@ -1,0 +1,92 @@
+#include "perception/oriented_edges.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <opencv2/imgproc.hpp>
+
+#include "perception/color_gradient.h"
+
+namespace corridor {
+namespace {
+
+// Rows of edges computed beyond the band, for the blur and Canny's gradients and hysteresis.
+constexpr int kBandMargin = 8;
+// Gradient orientations in this many bins over 180 degrees, one bit each.
+constexpr int kOrientationBins = 8;
+
+int OrientationBin(double gx, double gy) {
+  double angle = std::atan2(gy, gx);  // (-pi, pi]
+  if (angle < 0) angle += M_PI;       // [0, pi]: an edge and its reverse are the same edge.
+  return std::min(kOrientationBins - 1, static_cast<int>(angle / M_PI * kOrientationBins));
+}
+
+}  // namespace
+
+OrientedEdges ComputeOrientedEdges(const cv::Mat& bgr, int top, int bottom) {
+  OrientedEdges out;
+  top = std::clamp(top, 0, bgr.rows);
+  bottom = std::clamp(bottom, top, bgr.rows);
+  out.top = top;
+  if (bottom <= top) return out;
+  const int from = std::max(0, top - kBandMargin), to = std::min(bgr.rows, bottom + kBandMargin);
+  cv::Mat smooth, dx, dy, edges;
+  cv::GaussianBlur(bgr.rowRange(from, to), smooth, cv::Size(0, 0), 1.0);
+  ColorGradient(smooth, &dx, &dy, nullptr);
+  cv::Canny(dx, dy, edges, 20, 60, true);
+  const cv::Rect band(0, top - from, bgr.cols, bottom - top);
+  out.edges = edges(band).clone();
+  // Each edge pixel's orientation bit, OR-ed over its 3x3 neighbourhood.
+  cv::Mat bits = cv::Mat::zeros(band.size(), CV_8U);
+  for (int r = 0; r < band.height; ++r) {
+    const uchar* e = out.edges.ptr<uchar>(r);
+    const short* gx = dx.ptr<short>(r + band.y);
+    const short* gy = dy.ptr<short>(r + band.y);
+    uchar* b = bits.ptr<uchar>(r);
+    for (int u = 0; u < band.width; ++u) {
+      if (e[u] != 0) b[u] = static_cast<uchar>(1u << OrientationBin(gx[u], gy[u]));
+    }
+  }
+  out.near = bits.clone();
+  for (int dv = -1; dv <= 1; ++dv) {
+    for (int du = -1; du <= 1; ++du) {
+      const cv::Rect source(std::max(0, du), std::max(0, dv), band.width - std::abs(du),
+                            band.height - std::abs(dv));
+      if ((dv == 0 && du == 0) || source.width <= 0 || source.height <= 0) continue;
+      const cv::Rect target(std::max(0, -du), std::max(0, -dv), source.width, source.height);
+      cv::Mat into = out.near(target);
+      cv::bitwise_or(into, bits(source), into);
+    }
+  }
+  return out;
+}
+
+double OrientedLineSupport(const cv::Point* line, int samples, const OrientedEdges& edges) {
+  const int rows = edges.near.rows;
+  const auto inside = [&](const cv::Point& p) {
+    return p.x >= 0 && p.x < edges.near.cols && p.y >= edges.top && p.y < edges.top + rows;
+  };
+  int first = -1, last = -1, visible = 0;
+  for (int i = 0; i < samples; ++i) {
+    if (!inside(line[i])) continue;
+    if (first < 0) first = i;
+    last = i;
+    ++visible;
+  }
+  if (visible < 8) return 0.0;
+  // The line's normal, from its two visible ends (straight up to the lens distortion).
+  const cv::Point d = line[last] - line[first];
+  const int bin = OrientationBin(-d.y, d.x);
+  uchar mask = 0;
+  for (int k = -1; k <= 1; ++k) {
+    mask |= static_cast<uchar>(1u << ((bin + k + kOrientationBins) % kOrientationBins));
+  }
+  int hits = 0;
+  for (int i = first; i <= last; ++i) {
+    if (!inside(line[i])) continue;
+    hits += (edges.near.ptr<uchar>(line[i].y - edges.top)[line[i].x] & mask) != 0;
+  }
+  return static_cast<double>(hits) / std::max(visible, samples / 2);
+}
+
+}  // namespace corridor
