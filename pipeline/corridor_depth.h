@@ -14,4 +14,5 @@
 #include "io/image_io.h"               // IWYU pragma: export
 #include "perception/junction_detector.h"  // IWYU pragma: export
 #include "pipeline/recover_depth.h"    // IWYU pragma: export
+#include "pipeline/sequence_prior.h"   // IWYU pragma: export
 #include "pipeline/visualization.h"    // IWYU pragma: export

@@ -4,6 +4,7 @@
 #include <thread>
 
 #include "pipeline/bounded_queue.h"
+#include "pipeline/sequence_prior.h"
 
 namespace corridor {
 
@@ -27,17 +28,12 @@ int64_t FramePipeline::Run(const Source& source, const Sink& sink) {
   });
   int64_t delivered = 0;
   bool stopped = false;
-  // The last frame's geometry: when one junction is hidden, its width stands in.
-  CorridorGeometry previous;
-  bool has_previous = false;
+  SequencePrior prior;  // The last frame's geometry, for a hidden junction or a held width.
   while (auto frame = queue.Pop()) {
     if (stopped) continue;  // Drain so that the extraction thread can finish.
     if (frame->result.ReadyToReconstruct() && frame->camera != nullptr) {
-      recoverer_.Reconstruct(*frame->camera, &frame->result, has_previous ? &previous : nullptr);
-      if (frame->result.status.ok()) {
-        previous = frame->result.geometry;
-        has_previous = true;
-      }
+      recoverer_.Reconstruct(*frame->camera, &frame->result, prior.Previous());
+      prior.Update(frame->result);
     }
     ++delivered;
     if (!sink(std::move(*frame))) {

@@ -97,6 +97,8 @@ bool RecoverDepthOptions::Check(std::string* why) const {
     reason = "max_line_error must be positive and finite";
   } else if (!(width_prior >= 0 && std::isfinite(width_prior))) {
     reason = "width_prior must be >= 0 (0 = none)";
+  } else if (!(max_width_change >= 0 && max_width_change < 1)) {
+    reason = "max_width_change must be in [0, 1) (0 = off)";
   } else if (!(ceiling_height >= 0 && std::isfinite(ceiling_height))) {
     reason = "ceiling_height must be >= 0 (0 = unknown)";
   } else if (!perception.Check(&reason)) {
@@ -110,6 +112,37 @@ bool RecoverDepthOptions::Check(std::string* why) const {
   if (why != nullptr) *why = reason;
   return false;
 }
+
+namespace {
+
+// In a sequence, a width much narrower than the previous frame's means that one junction is wrong
+// (a box edge or a grout line taken for it): the wall that moved less since the previous frame
+// stays, and the other one is put at the previous width from it.
+void HoldWidth(const CorridorGeometry& previous, double max_change, CorridorGeometry* g,
+               RecoverDepthResult* result) {
+  // Only a narrower width: the lines mistaken for a junction (box edges, grout) lie inside the
+  // floor, while a wider width is as often the correction of an earlier mistake.
+  if (!(max_change > 0) || !(previous.width > 0) ||
+      g->width >= (1 - max_change) * previous.width) {
+    return;
+  }
+  const bool keep_left = std::abs(g->LeftDistance() - previous.LeftDistance()) <=
+                         std::abs(g->RightDistance() - previous.RightDistance());
+  const double kept = keep_left ? g->LeftDistance() : g->RightDistance();
+  const double other = previous.width - kept;
+  if (!(other > 0.05)) return;  // The kept wall is beyond the previous width: nothing to hold.
+  std::ostringstream how;
+  how.precision(2);
+  how << std::fixed << "width " << g->width << " m is much narrower than the previous frame's "
+      << previous.width << " m: the " << (keep_left ? "left" : "right")
+      << " wall kept, the previous width held";
+  g->offset = keep_left ? kept - 0.5 * previous.width : 0.5 * previous.width - kept;
+  g->width = previous.width;
+  result->width_held = true;
+  result->fallback += (result->fallback.empty() ? "" : "; ") + how.str();
+}
+
+}  // namespace
 
 Status CheckPlausible(const CorridorGeometry& g, const RecoverDepthOptions& options) {
   std::ostringstream msg;
@@ -249,6 +282,7 @@ Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* res
     status = CheckPlausible(geometry, options_);
     if (status.ok()) status = CheckLineFit(geometry, observation, camera, options_);
     if (!status.ok()) return finish(status);
+    if (previous != nullptr) HoldWidth(*previous, options_.max_width_change, &geometry, result);
   }
   geometry.ceiling_height = options_.ceiling_height;
   stage = Clock::now();

@@ -37,6 +37,8 @@ struct RecoverDepthOptions {
   bool estimate_ceiling = true;            // Without a known height, look for the ceiling/wall junctions.
   CeilingDetectorOptions ceiling;          // Ceiling-height search (beyond the paper).
   double width_prior = 0.0;                // Width for frames where one junction is hidden, m (0 = none; a sequence uses the previous frame's).
+  double max_width_change = 0.15;          // In a sequence, a width this much (relative) narrower than the previous frame's means one junction is
+                                           // wrong (a box edge or grout line taken for it): the previous width is held from the wall that moved less (0 = off).
   bool estimate_end_wall = true;           // Look for a wall across the corridor where both junctions end.
   EndWallDetectorOptions end_wall;         // End-wall search (beyond the paper).
 
@@ -61,7 +63,9 @@ struct RecoverDepthResult {
   SolverSummary solver_summary;   // What the solver reported.
   CeilingEstimate ceiling;        // The ceiling search (found = false when not run or not seen).
   EndWallEstimate end_wall;       // The end-wall search (found = false when not run or not seen).
-  std::string fallback;           // Non-empty when one junction and a known width gave the geometry: how.
+  std::string fallback;           // Non-empty when the geometry is not the two junction lines' alone: how
+                                  // (one junction and a known width, or the previous frame's width held).
+  bool width_held = false;        // True when the previous frame's width replaced this frame's (max_width_change).
 
   // After Detect: both junctions were found, or only one (Reconstruct may then use a known width).
   bool ReadyToReconstruct() const {
@@ -91,7 +95,8 @@ class DepthRecoverer {
   // and rasterises the depth (the depth-recovery thread). Both return result->status.
   Status Detect(const cv::Mat& image, const Camera& camera, RecoverDepthResult* result) const;
   // `previous` (may be null) is the previous frame's geometry in a sequence: when one junction is
-  // hidden, its width (and, without a vanishing point, its pitch) stands in.
+  // hidden, its width (and, without a vanishing point, its pitch) stands in; when the two
+  // junctions give a much narrower width (max_width_change), it is held (result->width_held).
   Status Reconstruct(const Camera& camera, RecoverDepthResult* result,
                      const CorridorGeometry* previous = nullptr) const;
 

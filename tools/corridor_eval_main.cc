@@ -1,6 +1,6 @@
 // corridor_eval: batch evaluation against ground truth, reproducing the paper's Tables 1-4.
 //   corridor_eval --dataset=DIR --output_dir=OUT [--solver=NAME] [--rasterizer=NAME]
-//                 [--caps=5,40] [--threads=N] [--compare=solverA:rastA,solverB:rastB]
+//                 [--caps=5,40] [--threads=N] [--sequence] [--compare=solverA:rastA,solverB:rastB]
 // Takes every option corridor_depth takes (tools/tool_flags.h). Writes OUT/report.{md,json,csv},
 // OUT/index.html, OUT/plots/*.png, OUT/vis/<scene>/<frame>.png and OUT/depth/<scene>/<frame>.png
 // (16-bit mm). Exit code 0: every frame evaluated; 1: some frames failed (listed in the report);
@@ -28,6 +28,9 @@ DEFINE_string(dataset, "", "Dataset root (<scene>/rgb, <scene>/depth, truth.yaml
 DEFINE_string(output_dir, "", "Where report.md/json/csv, index.html, plots/, vis/, depth/ go");
 DEFINE_string(caps, "5,40", "Depth caps in metres, comma-separated (the paper: 5 and 40)");
 DEFINE_int32(threads, 0, "Worker threads (0 = one per core)");
+DEFINE_bool(sequence, false,
+            "Each scene is a sequence: its frames in order, each with the previous frame's "
+            "geometry (a hidden junction's width, a held width), as corridor_depth runs them");
 DEFINE_string(compare, "",
               "Configurations to compare, solver:rasterizer,...; the first one's numbers go "
               "at the top level of report.json and into the tables (overrides --solver and "
@@ -116,7 +119,7 @@ void PrintSummary(const EvalReport& r) {
 int Main(int argc, char** argv) {
   gflags::SetUsageMessage(
       "corridor_eval --dataset=DIR --output_dir=OUT [--solver=NAME] [--rasterizer=NAME] "
-      "[--caps=5,40] [--threads=N] [--compare=solverA:rastA,solverB:rastB]");
+      "[--caps=5,40] [--threads=N] [--sequence] [--compare=solverA:rastA,solverB:rastB]");
   const Status flags = CheckFlagNames(argc, argv);
   if (!flags.ok()) return Usage(flags.message());
   gflags::ParseCommandLineFlags(&argc, &argv, true);
@@ -131,6 +134,7 @@ int Main(int argc, char** argv) {
   if (!status.ok()) return Usage(status.message());
   EvalRunOptions run_options;
   status = ResolveThreadCount(FLAGS_threads, &run_options.threads);
+  run_options.sequence = FLAGS_sequence;
   if (!status.ok()) return Usage(status.message());
   std::vector<Config> configs;
   status = ParseConfigs(FLAGS_compare, &configs);

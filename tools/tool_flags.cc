@@ -23,6 +23,10 @@ DEFINE_double(ceiling_height, 0.0, "Known ceiling height above the floor, m (0 =
 DEFINE_double(width_prior, 0.0,
               "Corridor width for frames where one junction is hidden, m (0 = none; in a sequence "
               "the previous frame's width is used)");
+DEFINE_double(max_width_change, 0.15,
+              "In a sequence, a width this much (relative) narrower than the previous frame's means "
+              "one junction is wrong: the previous width is held, for up to 3 frames in a row "
+              "(0 = off)");
 DEFINE_bool(end_wall, true,
             "Look for a wall across the corridor where both junctions end, and close the depth "
             "there (beyond the paper)");
@@ -40,6 +44,7 @@ Status RecoverDepthOptionsFromFlags(RecoverDepthOptions* options) {
   options->ceiling_height = FLAGS_ceiling_height;
   options->estimate_end_wall = FLAGS_end_wall;
   options->width_prior = FLAGS_width_prior;
+  options->max_width_change = FLAGS_max_width_change;
   options->points_per_line = FLAGS_points_per_line;
   options->perception.roi_top_fraction = FLAGS_roi_top;
   std::unique_ptr<DepthRecoverer> probe;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <fstream>
 
+#include "synth/presets.h"
 #include "tests/tools/eval_test_dataset.h"
 
 namespace corridor {
@@ -50,6 +51,43 @@ TEST(ResolveThreadCount, ZeroIsHardwareNegativeIsAnError) {
   const Status status = ResolveThreadCount(-1, &threads);
   EXPECT_EQ(status.code(), StatusCode::kInvalidArgument);
   EXPECT_NE(status.message().find("--threads"), std::string::npos);
+}
+
+// A scene as a sequence: frames 9 and 10 of the paper preset's Cord_E05 (in frame 10 a box hides
+// the right junction and the width alone comes out far too narrow). With --sequence, frame 10
+// holds frame 9's width and follows the generator's truth; records keep the dataset order.
+TEST(EvaluateScenes, ASequenceHoldsAWidthThatNarrows) {
+  testing_util::EvalTempDir dir("sequence");
+  bool found = false;
+  for (synth::ScenePreset preset : synth::PaperPreset()) {
+    if (preset.name != "Cord_E05") continue;
+    preset.poses = {preset.poses.at(9), preset.poses.at(10)};
+    ASSERT_TRUE(synth::WriteScene(dir.Path("data"), preset, nullptr).ok());
+    found = true;
+  }
+  ASSERT_TRUE(found);
+  std::vector<InputScene> scenes;
+  ASSERT_TRUE(ResolveInput(dir.Path("data"), CameraOverrides(), &scenes).ok());
+  std::unique_ptr<DepthRecoverer> recoverer;
+  ASSERT_TRUE(DepthRecoverer::Create(RecoverDepthOptions(), &recoverer).ok());
+  std::vector<FrameRecord> alone, sequence;
+  EvalRunOptions run;
+  run.threads = 2;
+  ASSERT_TRUE(EvaluateScenes(scenes, *recoverer, FrameEvalOptions(), run, &alone).ok());
+  run.sequence = true;
+  ASSERT_TRUE(EvaluateScenes(scenes, *recoverer, FrameEvalOptions(), run, &sequence).ok());
+  ASSERT_EQ(alone.size(), 2u);
+  ASSERT_EQ(sequence.size(), 2u);
+  for (size_t i = 0; i < 2; ++i) {
+    EXPECT_EQ(alone[i].frame, sequence[i].frame);
+    ASSERT_TRUE(alone[i].has_estimate && sequence[i].has_estimate) << i;
+    ASSERT_TRUE(sequence[i].has_truth);
+  }
+  const double truth = sequence[1].truth.width;
+  EXPECT_LT(alone[1].estimate.width, 0.85 * truth);
+  EXPECT_NEAR(sequence[1].estimate.width, truth, 0.03 * truth);
+  EXPECT_EQ(sequence[1].estimate.width, sequence[0].estimate.width);
+  ExpectSameGeometry(alone[0].estimate, sequence[0].estimate, "first frame");
 }
 
 TEST(EvaluateScenes, SameNumbersForEveryThreadCount) {

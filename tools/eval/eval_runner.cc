@@ -23,12 +23,24 @@ Status ResolveThreadCount(int flag, int* threads) {
 Status EvaluateScenes(const std::vector<InputScene>& scenes, const DepthRecoverer& recoverer,
                       const FrameEvalOptions& frame_options, const EvalRunOptions& run_options,
                       std::vector<FrameRecord>* records) {
-  std::vector<std::pair<size_t, size_t>> jobs;  // (scene, frame) in dataset order.
+  // Jobs: (scene, first frame, end frame, first record), in dataset order; one frame each, or
+  // one whole scene each in a sequence.
+  struct Job {
+    size_t scene, begin, end, record;
+  };
+  std::vector<Job> jobs;
+  size_t count = 0;
   for (size_t s = 0; s < scenes.size(); ++s) {
-    for (size_t f = 0; f < scenes[s].frames.size(); ++f) jobs.emplace_back(s, f);
+    const size_t n = scenes[s].frames.size();
+    if (run_options.sequence) {
+      if (n > 0) jobs.push_back({s, 0, n, count});
+    } else {
+      for (size_t f = 0; f < n; ++f) jobs.push_back({s, f, f + 1, count + f});
+    }
+    count += n;
   }
-  records->assign(jobs.size(), FrameRecord());
-  const int total = static_cast<int>(jobs.size());
+  records->assign(count, FrameRecord());
+  const int total = static_cast<int>(count);
   std::unique_ptr<Progress> progress;
   if (!run_options.progress_label.empty()) {
     progress = std::make_unique<Progress>(run_options.progress_label, total);
@@ -43,18 +55,25 @@ Status EvaluateScenes(const std::vector<InputScene>& scenes, const DepthRecovere
     while (!stop.load()) {
       const size_t i = next.fetch_add(1);
       if (i >= jobs.size()) return;
-      const Status status = EvaluateFrame(scenes[jobs[i].first], jobs[i].second, recoverer,
-                                          frame_options, &(*records)[i]);
-      std::lock_guard<std::mutex> lock(mutex);
-      if (!status.ok() && first_error.ok()) {
-        first_error = status;
-        stop = true;
+      const Job& job = jobs[i];
+      SequencePrior prior;
+      for (size_t f = job.begin; f < job.end && !stop.load(); ++f) {
+        const Status status =
+            EvaluateFrame(scenes[job.scene], f, recoverer, frame_options,
+                          &(*records)[job.record + f - job.begin],
+                          run_options.sequence ? &prior : nullptr);
+        std::lock_guard<std::mutex> lock(mutex);
+        if (!status.ok() && first_error.ok()) {
+          first_error = status;
+          stop = true;
+        }
+        ++done;
+        if (progress) progress->Tick(done);
       }
-      ++done;
-      if (progress) progress->Tick(done);
     }
   };
-  const int num_threads = std::max(1, std::min(run_options.threads, std::max(total, 1)));
+  const int num_threads =
+      std::max(1, std::min(run_options.threads, std::max(static_cast<int>(jobs.size()), 1)));
   std::vector<std::thread> workers;
   for (int t = 1; t < num_threads; ++t) workers.emplace_back(work);
   work();

@@ -14,6 +14,7 @@ namespace corridor {
 struct EvalRunOptions {
   int threads = 1;             // Worker threads, >= 1.
   std::string progress_label;  // Shown before the progress bar; "" shows none.
+  bool sequence = false;       // Each scene is a sequence: its frames in order on one thread, with the previous frame's geometry.
 };
 
 // The thread count for --threads: 0 -> hardware concurrency (at least 1); negative ->

@@ -68,7 +68,7 @@ void AccumulateDepthBins(const cv::Mat& pred, const cv::Mat& gt, double max_dept
 }
 
 Status EvaluateFrame(const InputScene& scene, size_t index, const DepthRecoverer& recoverer,
-                     const FrameEvalOptions& options, FrameRecord* record) {
+                     const FrameEvalOptions& options, FrameRecord* record, SequencePrior* prior) {
   const DatasetFrame& frame = scene.frames[index];
   *record = FrameRecord();
   record->scene = scene.name;
@@ -91,7 +91,14 @@ Status EvaluateFrame(const InputScene& scene, size_t index, const DepthRecoverer
   RecoverDepthResult result;
   if (status.ok()) {
     record->ran = true;
-    status = recoverer.Recover(image, scene.camera, &result);
+    if (prior == nullptr) {
+      status = recoverer.Recover(image, scene.camera, &result);
+    } else {
+      recoverer.Detect(image, scene.camera, &result);
+      if (result.ReadyToReconstruct()) recoverer.Reconstruct(scene.camera, &result, prior->Previous());
+      prior->Update(result);
+      status = result.status;
+    }
     record->times = result.times;
   }
   record->status = status;

@@ -8,6 +8,7 @@
 #include "core/status.h"
 #include "evaluation/depth_metrics.h"
 #include "pipeline/recover_depth.h"
+#include "pipeline/sequence_prior.h"
 #include "tools/input_source.h"
 
 namespace corridor {
@@ -51,9 +52,11 @@ std::string DepthRelativePath(const std::string& scene, const std::string& frame
 // Evaluates scene.frames[index]: reads the image and its ground truth, recovers depth, and fills
 // `record`. A frame that fails (unreadable file, no corridor, depth/colour size mismatch) is a
 // record with a non-ok status, not an error. Returns non-ok only when an output cannot be
-// written.
+// written. With a `prior` (a sequence; may be null) the frame is reconstructed with the previous
+// frame's geometry (hidden junction, held width), and the prior is updated.
 Status EvaluateFrame(const InputScene& scene, size_t index, const DepthRecoverer& recoverer,
-                     const FrameEvalOptions& options, FrameRecord* record);
+                     const FrameEvalOptions& options, FrameRecord* record,
+                     SequencePrior* prior = nullptr);
 
 // Adds the AbsRel of pred against gt in 1 m bins of gt, for gt in (0, max_depth], to `bins`
 // (resized to ceil(max_depth) bins when smaller). Uses ComputeDepthMetrics per bin.

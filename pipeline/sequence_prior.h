@@ -1,0 +1,35 @@
+#pragma once
+
+#include "core/corridor_geometry.h"
+#include "pipeline/recover_depth.h"
+
+namespace corridor {
+
+// What a sequence carries from frame to frame: the last good geometry, whose width stands in when
+// one junction is hidden and is held when the next width is much narrower (RecoverDepthOptions::
+// max_width_change). Held kMaxHeld frames in a row, the width is let go for one frame: the
+// corridor may really have narrowed, or the held width was the wrong one.
+class SequencePrior {
+ public:
+  static constexpr int kMaxHeld = 3;
+
+  // The geometry to pass to DepthRecoverer::Reconstruct as `previous`; null for none.
+  const CorridorGeometry* Previous() const {
+    return has_previous_ && held_ < kMaxHeld ? &previous_ : nullptr;
+  }
+
+  // Records a frame after Reconstruct; failed frames change nothing.
+  void Update(const RecoverDepthResult& result) {
+    if (!result.status.ok() || !result.has_geometry) return;
+    previous_ = result.geometry;
+    has_previous_ = true;
+    held_ = result.width_held ? held_ + 1 : 0;
+  }
+
+ private:
+  CorridorGeometry previous_;
+  bool has_previous_ = false;
+  int held_ = 0;  // Frames in a row whose width was held.
+};
+
+}  // namespace corridor

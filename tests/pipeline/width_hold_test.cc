@@ -1,0 +1,128 @@
+// Holding the width in a sequence: on a generated frame where a box hides the right junction, the
+// detector takes an edge inside the floor for it and the width comes out far too narrow. Given the
+// previous frame's true geometry, the width is held, and the result follows the generator's truth;
+// a wider width, or max_width_change = 0, is left alone.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "pipeline/frame_pipeline.h"
+#include "pipeline/recover_depth.h"
+#include "synth/corridor_renderer.h"
+#include "synth/presets.h"
+
+namespace corridor {
+namespace {
+
+struct HiddenJunction {
+  Camera camera;
+  synth::Frame frame;             // Frame 10 of the paper preset's Cord_E05: a box hides the right junction.
+  synth::Frame before;            // Frame 9, where both junctions are seen.
+  CorridorGeometry previous;      // The true geometry of frame 9.
+};
+
+HiddenJunction MakeHiddenJunction() {
+  HiddenJunction h;
+  for (const auto& preset : synth::PaperPreset()) {
+    if (preset.name != "Cord_E05") continue;
+    h.camera = preset.camera;
+    EXPECT_TRUE(synth::RenderFrame(synth::BuildScene(preset.scene), preset.camera,
+                                   preset.poses.at(10), &h.frame)
+                    .ok());
+    EXPECT_TRUE(synth::RenderFrame(synth::BuildScene(preset.scene), preset.camera,
+                                   preset.poses.at(9), &h.before)
+                    .ok());
+    h.previous = h.before.truth;
+  }
+  EXPECT_FALSE(h.frame.bgr.empty()) << "no Cord_E05 in the paper preset";
+  return h;
+}
+
+RecoverDepthResult RecoverWith(const HiddenJunction& h, const RecoverDepthOptions& options,
+                       const CorridorGeometry* previous) {
+  std::unique_ptr<DepthRecoverer> recoverer;
+  EXPECT_TRUE(DepthRecoverer::Create(options, &recoverer).ok());
+  RecoverDepthResult result;
+  recoverer->Detect(h.frame.bgr, h.camera, &result);
+  EXPECT_TRUE(result.status.ok()) << result.status.ToString();
+  recoverer->Reconstruct(h.camera, &result, previous);
+  EXPECT_TRUE(result.status.ok()) << result.status.ToString();
+  return result;
+}
+
+TEST(WidthHoldTest, ANarrowWidthAfterAWideOneIsHeldAndFollowsTheTruth) {
+  const HiddenJunction h = MakeHiddenJunction();
+  const CorridorGeometry& truth = h.frame.truth;
+  // Alone, the frame's width is far too narrow: the premise of this test.
+  const RecoverDepthResult alone = RecoverWith(h, RecoverDepthOptions(), nullptr);
+  ASSERT_LT(alone.geometry.width, 0.85 * truth.width);
+  EXPECT_FALSE(alone.width_held);
+
+  const RecoverDepthResult held = RecoverWith(h, RecoverDepthOptions(), &h.previous);
+  EXPECT_TRUE(held.width_held);
+  EXPECT_NE(held.fallback.find("previous width held"), std::string::npos) << held.fallback;
+  EXPECT_DOUBLE_EQ(held.geometry.width, h.previous.width);
+  // Both walls within 3% of the generator's (the left junction is the visible one).
+  EXPECT_NEAR(held.geometry.LeftDistance(), truth.LeftDistance(), 0.03 * truth.LeftDistance());
+  EXPECT_NEAR(held.geometry.RightDistance(), truth.RightDistance(), 0.03 * truth.RightDistance());
+
+  RecoverDepthOptions off;
+  off.max_width_change = 0;
+  const RecoverDepthResult not_held = RecoverWith(h, off, &h.previous);
+  EXPECT_FALSE(not_held.width_held);
+  EXPECT_DOUBLE_EQ(not_held.geometry.width, alone.geometry.width);
+}
+
+TEST(WidthHoldTest, AWiderWidthIsNotHeld) {
+  const HiddenJunction h = MakeHiddenJunction();
+  CorridorGeometry narrow = h.previous;
+  narrow.width = 0.5 * h.previous.width;
+  const RecoverDepthResult result = RecoverWith(h, RecoverDepthOptions(), &narrow);
+  EXPECT_FALSE(result.width_held);
+  EXPECT_TRUE(result.fallback.empty()) << result.fallback;
+}
+
+// In a stream, the width is held at most three frames in a row: then the narrow width is let go
+// (the corridor may really have narrowed).
+TEST(WidthHoldTest, AStreamHoldsTheWidthThreeFramesAtMost) {
+  const HiddenJunction h = MakeHiddenJunction();
+  std::unique_ptr<DepthRecoverer> recoverer;
+  ASSERT_TRUE(DepthRecoverer::Create(RecoverDepthOptions(), &recoverer).ok());
+  FramePipeline pipeline(*recoverer);
+  int next = 0;
+  const auto source = [&](PipelineFrame* frame) {
+    if (next == 6) return false;
+    frame->name = std::to_string(next);
+    frame->camera = &h.camera;
+    frame->image = next == 0 ? h.before.bgr : h.frame.bgr;
+    ++next;
+    return true;
+  };
+  std::vector<bool> held;
+  std::vector<double> widths;
+  const auto sink = [&](PipelineFrame&& frame) {
+    EXPECT_TRUE(frame.result.status.ok()) << frame.name << ": " << frame.result.status.ToString();
+    held.push_back(frame.result.width_held);
+    widths.push_back(frame.result.geometry.width);
+    return true;
+  };
+  ASSERT_EQ(pipeline.Run(source, sink), 6);
+  EXPECT_EQ(held, (std::vector<bool>{false, true, true, true, false, false}));
+  EXPECT_NEAR(widths[0], h.before.truth.width, 0.03 * h.before.truth.width);
+  for (int i = 1; i <= 3; ++i) EXPECT_DOUBLE_EQ(widths[i], widths[0]) << i;
+  EXPECT_LT(widths[4], 0.85 * widths[0]);
+}
+
+TEST(WidthHoldTest, OptionOutsideItsRangeIsRejected) {
+  RecoverDepthOptions options;
+  std::unique_ptr<DepthRecoverer> recoverer;
+  for (const double bad : {-0.1, 1.0, std::nan("")}) {
+    options.max_width_change = bad;
+    const Status status = DepthRecoverer::Create(options, &recoverer);
+    EXPECT_EQ(status.code(), StatusCode::kInvalidArgument) << bad;
+    EXPECT_NE(status.message().find("max_width_change"), std::string::npos) << status.message();
+  }
+}
+
+}  // namespace
+}  // namespace corridor
