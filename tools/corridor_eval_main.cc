@@ -88,6 +88,7 @@ Status ParseConfigs(const std::string& text, std::vector<Config>* configs) {
 Status WriteReports(const std::vector<EvalReport>& reports, const std::string& out) {
   ReportContext context;
   context.dataset = FLAGS_dataset;
+  context.sequence = FLAGS_sequence;
   Status status = WritePlots(reports, out, &context.plot_files);
   if (!status.ok()) return status;
   const std::vector<std::pair<std::string, std::string>> files = {

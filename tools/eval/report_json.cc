@@ -216,6 +216,7 @@ std::string JsonNumber(double value) {
 std::string ReportJson(const std::vector<EvalReport>& configs, const ReportContext& context) {
   JsonObject root;
   root.String("tool", "corridor_eval").String("dataset", context.dataset);
+  root.Add("sequence", context.sequence ? "true" : "false");
   if (configs.empty()) return root.Text() + "\n";
   AddConfig(configs.front(), &root);
   std::vector<std::string> plots;

@@ -80,7 +80,9 @@ std::string ReportMarkdown(const std::vector<EvalReport>& configs, const ReportC
   if (configs.size() > 1) out += " (first of " + std::to_string(configs.size()) + " compared)";
   out += "\n- frames: " + std::to_string(r.all.num_frames) + " in " +
          std::to_string(r.scenes.size()) + " scenes, " + std::to_string(r.all.num_failed) +
-         " failed, " + std::to_string(r.all.num_depth_truth) + " with ground-truth depth\n\n";
+         " failed, " + std::to_string(r.all.num_depth_truth) + " with ground-truth depth, " +
+         (context.sequence ? "each scene a sequence (--sequence)" : "each frame on its own") +
+         "\n\n";
   for (const TextTable& table : ReportTables(configs)) out += MdTable(table);
   if (!context.plot_files.empty()) {
     out += "## Plots\n\n";

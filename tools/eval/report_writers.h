@@ -10,6 +10,7 @@ namespace corridor {
 // What the reports say about the run besides the numbers.
 struct ReportContext {
   std::string dataset;                  // The --dataset path.
+  bool sequence = false;                // --sequence: each scene's frames in order, with the previous frame's geometry.
   std::vector<std::string> plot_files;  // Plot PNGs, relative to the output folder.
 };
 
