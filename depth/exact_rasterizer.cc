@@ -122,7 +122,11 @@ Status ExactRasterizer::Render(const CorridorGeometry& geometry, const Camera& c
       const bool side = z_wall < z_plane;
       const float z_box = side ? z_wall : z_plane;
       const float dr = dr0 + dr_step * u;
-      const float z_end = dr > 0 ? box.end / dr : inf;  // inf without an end wall.
+      // inf without an end wall or when the ray points away from it (d.r <= 0: the quotient is
+      // <= 0 or -inf). Selected on the quotient, not on d.r: GCC would move a division used
+      // only under `dr > 0` into a branch, and a branch keeps the loop from vectorising.
+      const float end_over_dr = box.end / dr;
+      const float z_end = end_over_dr > 0 ? end_over_dr : inf;
       const bool end = z_end < z_box;                   // The end wall hides what is beyond.
       const bool wall = side | end;
       const float z = end ? z_end : z_box;
