@@ -100,6 +100,13 @@ Status DetectCeiling(const cv::Mat& bgr, const Camera& camera, const CorridorGeo
   for (size_t k = 0; k < lines.heights.size(); ++k) {
     const double left = OrientedLineSupport(lines.Line(k, 0), lines.samples, edges);
     const double right = OrientedLineSupport(lines.Line(k, 1), lines.samples, edges);
+    const double support[2] = {left, right};
+    for (int side = 0; side < 2; ++side) {
+      if (support[side] > estimate->side_support[side]) {
+        estimate->side_support[side] = support[side];
+        estimate->side_height[side] = lines.heights[k];
+      }
+    }
     const double score = left + right;
     if (score > best_score) {
       best_score = score;

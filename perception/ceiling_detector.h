@@ -29,6 +29,10 @@ struct CeilingEstimate {
   double left_support = 0;   // Fraction of the left junction's visible samples on edges.
   double right_support = 0;  // Same for the right one.
   int points = 0;            // Edge pixels whose rays gave the robust (median) estimate.
+  // Each side searched alone: the height whose junction on that wall best follows the edges, and
+  // its support. A wrong wall distance scales its side's height, so the two then disagree.
+  double side_height[2] = {0, 0};   // Left, right: H_c, m (0 when the side has no line).
+  double side_support[2] = {0, 0};  // Left, right: the support of that line.
   std::string reason;        // Why nothing was found.
 };
 

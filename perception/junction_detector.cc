@@ -353,6 +353,16 @@ Status DetectJunctions(const cv::Mat& bgr, const JunctionDetectorOptions& option
                         options.support_distance_px, height);
   result->right = Refine(right[pair.right], edge_pixels, roi_top, pair.vanishing_point, false,
                          options.support_distance_px, height);
+  if (pair.left_lower >= 0) {
+    result->left_lower = Refine(left[pair.left_lower], edge_pixels, roi_top, pair.vanishing_point,
+                                true, options.support_distance_px, height);
+    result->has_left_lower = true;
+  }
+  if (pair.right_lower >= 0) {
+    result->right_lower = Refine(right[pair.right_lower], edge_pixels, roi_top,
+                                 pair.vanishing_point, false, options.support_distance_px, height);
+    result->has_right_lower = true;
+  }
   const Eigen::Vector3d vp = result->left.line.cross(result->right.line);
   result->vanishing_point =
       std::abs(vp.z()) > 1e-12 ? Eigen::Vector2d(vp.head<2>() / vp.z()) : pair.vanishing_point;

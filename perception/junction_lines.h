@@ -27,6 +27,12 @@ struct JunctionPair {
   Eigen::Vector2d vanishing_point = Eigen::Vector2d::Zero();  // Intersection of the two lines.
   std::vector<cv::Vec4f> segments;  // All Hough segments in the ROI (for drawing and debugging).
 
+  // Per side, a parallel line just below the chosen junction that looks less like the floor's
+  // boundary: the junction if the chosen line is a baseboard's top after all (another cue, the
+  // ceiling, decides; see RecoverDepthOptions::ceiling_checks_baseboards).
+  bool has_left_lower = false, has_right_lower = false;
+  JunctionLine left_lower, right_lower;
+
   // When only one side has candidates (the other junction hidden or out of view): its best line,
   // for a fallback with a known width. Never a made-up second line.
   bool has_single = false;        // True when `single` holds the one visible junction.

@@ -44,18 +44,17 @@ Eigen::Vector2d DownDirection(const MergedLine& line, const Eigen::Vector2d& vp)
   return (far - vp).normalized();
 }
 
-// A baseboard gives two parallel junction-like lines: its top, and below it the junction. When
-// the chosen line has such a partner just below it (within a few degrees, through the same
-// vanishing point, on the floor side) that looks at least nearly as much like the floor's
-// boundary, the partner is the junction.
-int LowerPartner(const std::vector<JunctionCandidate>& side, int chosen, const Eigen::Vector2d& vp,
-                 bool left) {
+// A baseboard gives two parallel junction-like lines: its top, and below it the junction. The
+// lines just below the chosen one (within 6 degrees, through the same vanishing point, on the floor
+// side) with at least `min_ratio` of its boundary score: the one farthest below, or -1.
+int LowerLine(const std::vector<JunctionCandidate>& side, int chosen, const Eigen::Vector2d& vp,
+              bool left, double min_ratio) {
   const Eigen::Vector2d d_chosen = DownDirection(side[chosen].line, vp);
-  int best = chosen;
+  int best = -1;
   double best_angle = 0;
   for (size_t k = 0; k < side.size(); ++k) {
     if (static_cast<int>(k) == chosen || !PassesThrough(side[k].line, vp)) continue;
-    if (side[k].boundary < 0.8 * side[chosen].boundary) continue;
+    if (side[k].boundary < min_ratio * side[chosen].boundary) continue;
     const Eigen::Vector2d d = DownDirection(side[k].line, vp);
     // Floor side: turned toward straight down, i.e. toward the image centre.
     const double cross = d_chosen.x() * d.y() - d_chosen.y() * d.x();
@@ -67,6 +66,19 @@ int LowerPartner(const std::vector<JunctionCandidate>& side, int chosen, const E
     }
   }
   return best;
+}
+
+// When the chosen line has a partner below it that looks at least nearly as much like the floor's
+// boundary, the partner is the junction (the chosen line is the baseboard's top). Otherwise the
+// partner with at least half the score is kept as the side's alternative.
+void ApplyBaseboardRule(const std::vector<JunctionCandidate>& side, const Eigen::Vector2d& vp,
+                        bool left, int* chosen, int* lower) {
+  const int partner = LowerLine(side, *chosen, vp, left, 0.8);
+  if (partner >= 0) {
+    *chosen = partner;
+    return;
+  }
+  *lower = LowerLine(side, *chosen, vp, left, 0.5);
 }
 
 }  // namespace
@@ -113,8 +125,8 @@ SelectedPair SelectJunctionPair(const std::vector<JunctionCandidate>& left,
     }
   }
   if (best.left >= 0) {
-    best.left = LowerPartner(left, best.left, best.vanishing_point, true);
-    best.right = LowerPartner(right, best.right, best.vanishing_point, false);
+    ApplyBaseboardRule(left, best.vanishing_point, true, &best.left, &best.left_lower);
+    ApplyBaseboardRule(right, best.vanishing_point, false, &best.right, &best.right_lower);
   }
   return best;
 }

@@ -5,6 +5,7 @@
 #include <mutex>
 #include <sstream>
 
+#include <Eigen/Geometry>
 #include <opencv2/imgproc.hpp>
 
 #include "estimation/corridor_observation.h"
@@ -140,6 +141,19 @@ void HoldWidth(const CorridorGeometry& previous, double max_change, CorridorGeom
   g->width = previous.width;
   result->width_held = true;
   result->fallback += (result->fallback.empty() ? "" : "; ") + how.str();
+}
+
+// Both ceiling junctions, each searched alone, strong enough to compare: how far apart their
+// heights above the camera are, |log(a_l / a_r)|; negative when they cannot be compared.
+double CeilingDisagreement(const CeilingEstimate& ceiling, double camera_height) {
+  constexpr double kMinSupport = 0.45;
+  const double a_left = ceiling.side_height[0] - camera_height;
+  const double a_right = ceiling.side_height[1] - camera_height;
+  if (!ceiling.found || ceiling.side_support[0] < kMinSupport ||
+      ceiling.side_support[1] < kMinSupport || !(a_left > 0.1) || !(a_right > 0.1)) {
+    return -1;
+  }
+  return std::abs(std::log(a_left / a_right));
 }
 
 }  // namespace
@@ -290,6 +304,10 @@ Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* res
     status = DetectCeiling(result->image, camera, geometry, options_.ceiling, &result->ceiling);
     if (!status.ok()) return finish(status);
     if (result->ceiling.found) geometry.ceiling_height = result->ceiling.height;
+    if (options_.ceiling_checks_baseboards && result->junctions.status.ok() &&
+        !result->width_held) {
+      CheckBaseboards(camera, &geometry, result);
+    }
   }
   result->times.ceiling = SecondsSince(stage);
   stage = Clock::now();
@@ -306,6 +324,61 @@ Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* res
   status = rasterizer_->Render(geometry, camera, &result->depth);
   result->times.rasterize = SecondsSince(stage);
   return finish(status);
+}
+
+void DepthRecoverer::CheckBaseboards(const Camera& camera, CorridorGeometry* geometry,
+                                     RecoverDepthResult* result) const {
+  // Heights that agree within 6% need no check; a lower line must bring them within 8%, and to
+  // less than half the disagreement.
+  const double agree = std::log(1.06), accept = std::log(1.08);
+  const double before = CeilingDisagreement(result->ceiling, geometry->camera_height);
+  if (before <= agree) return;
+  double best = before;
+  int best_side = -1;
+  CorridorGeometry best_geometry;
+  SolverSummary best_summary;
+  CeilingEstimate best_ceiling;
+  for (int side = 0; side < 2; ++side) {
+    const bool has = side == 0 ? result->junctions.has_left_lower : result->junctions.has_right_lower;
+    if (!has) continue;
+    JunctionPair pair = result->junctions;
+    (side == 0 ? pair.left : pair.right) = side == 0 ? pair.left_lower : pair.right_lower;
+    const CorridorObservation observation =
+        ObservationFromJunctions(pair, camera, options_.points_per_line);
+    SolverSummary summary;
+    if (!solver_->Solve(observation, nullptr, &summary).ok()) continue;
+    CorridorGeometry g = summary.estimate;
+    g.camera_height = camera.mount_height;
+    if (!CheckPlausible(g, options_).ok() || !CheckLineFit(g, observation, camera, options_).ok()) {
+      continue;
+    }
+    CeilingEstimate ceiling;
+    if (!DetectCeiling(result->image, camera, g, options_.ceiling, &ceiling).ok()) continue;
+    const double after = CeilingDisagreement(ceiling, g.camera_height);
+    if (after < 0 || after > accept || after > 0.5 * best) continue;
+    best = after;
+    best_side = side;
+    best_geometry = g;
+    best_summary = summary;
+    best_ceiling = ceiling;
+  }
+  if (best_side < 0) return;
+  JunctionPair& pair = result->junctions;
+  if (best_side == 0) {
+    pair.left = pair.left_lower;
+  } else {
+    pair.right = pair.right_lower;
+  }
+  const Eigen::Vector3d vp = pair.left.line.cross(pair.right.line);
+  if (std::abs(vp.z()) > 1e-12) pair.vanishing_point = vp.head<2>() / vp.z();
+  result->solver_summary = best_summary;
+  result->ceiling = best_ceiling;
+  best_geometry.ceiling_height = best_ceiling.height;
+  *geometry = best_geometry;
+  const std::string how = std::string(best_side == 0 ? "left" : "right") +
+                          " junction: the lower of two parallel lines (the upper one a "
+                          "baseboard's top), with which both ceiling junctions agree";
+  result->fallback += (result->fallback.empty() ? "" : "; ") + how;
 }
 
 Status RecoverDepth(const cv::Mat& image, const Camera& camera, const RecoverDepthOptions& options,

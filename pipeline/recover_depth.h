@@ -36,6 +36,7 @@ struct RecoverDepthOptions {
   double ceiling_height = 0.0;             // Known ceiling height above the floor, m (0 = estimate or none).
   bool estimate_ceiling = true;            // Without a known height, look for the ceiling/wall junctions.
   CeilingDetectorOptions ceiling;          // Ceiling-height search (beyond the paper).
+  bool ceiling_checks_baseboards = true;   // Where a baseboard gave two parallel lines and the upper one was taken, take the lower one when it makes both ceiling junctions agree.
   double width_prior = 0.0;                // Width for frames where one junction is hidden, m (0 = none; a sequence uses the previous frame's).
   double max_width_change = 0.15;          // In a sequence, a width this much (relative) narrower than the previous frame's means one junction is
                                            // wrong (a box edge or grout line taken for it): the previous width is held from the wall that moved less (0 = off).
@@ -105,6 +106,11 @@ class DepthRecoverer {
  private:
   DepthRecoverer(const RecoverDepthOptions& options, std::unique_ptr<CorridorSolver> solver,
                  std::unique_ptr<DepthRasterizer> rasterizer);
+  // ceiling_checks_baseboards: when both ceiling junctions were searched alone and disagree, and
+  // a side has a lower parallel line, the geometry and ceiling with that line instead, if they
+  // make the two agree. Updates *geometry and *result (junctions, solver summary, ceiling).
+  void CheckBaseboards(const Camera& camera, CorridorGeometry* geometry,
+                       RecoverDepthResult* result) const;
 
   const RecoverDepthOptions options_;
   const std::unique_ptr<CorridorSolver> solver_;

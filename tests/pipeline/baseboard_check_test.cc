@@ -1,0 +1,68 @@
+// The ceiling as referee of the baseboard rule: on frame 0 of the paper preset's Cord_E01 the
+// right junction's pair choice takes the top of the baseboard, and the width comes out 13% too
+// wide; the two ceiling junctions, each searched alone, then disagree. With the lower parallel
+// line they agree, and the geometry follows the generator's truth.
+#include <gtest/gtest.h>
+
+#include "pipeline/recover_depth.h"
+#include "synth/corridor_renderer.h"
+#include "synth/presets.h"
+
+namespace corridor {
+namespace {
+
+synth::ScenePreset E01() {
+  for (const auto& preset : synth::PaperPreset()) {
+    if (preset.name == "Cord_E01") return preset;
+  }
+  ADD_FAILURE() << "no Cord_E01 in the paper preset";
+  return synth::ScenePreset();
+}
+
+TEST(BaseboardCheckTest, TheCeilingPicksTheLowerOfTwoParallelLines) {
+  const synth::ScenePreset preset = E01();
+  synth::Frame frame;
+  ASSERT_TRUE(
+      synth::RenderFrame(synth::BuildScene(preset.scene), preset.camera, preset.poses.at(0), &frame)
+          .ok());
+  const CorridorGeometry& truth = frame.truth;
+
+  RecoverDepthOptions off;
+  off.ceiling_checks_baseboards = false;
+  RecoverDepthResult upper;
+  ASSERT_TRUE(RecoverDepth(frame.bgr, preset.camera, off, &upper).ok());
+  // The premise: the upper line gives a width far too wide, and a lower line was there.
+  ASSERT_GT(upper.geometry.width, 1.08 * truth.width);
+  ASSERT_TRUE(upper.junctions.has_left_lower || upper.junctions.has_right_lower);
+  EXPECT_TRUE(upper.fallback.empty()) << upper.fallback;
+
+  RecoverDepthResult checked;
+  ASSERT_TRUE(RecoverDepth(frame.bgr, preset.camera, RecoverDepthOptions(), &checked).ok());
+  EXPECT_NEAR(checked.geometry.width, truth.width, 0.02 * truth.width);
+  EXPECT_NEAR(checked.geometry.RightDistance(), truth.RightDistance(), 0.03 * truth.RightDistance());
+  EXPECT_NEAR(checked.geometry.ceiling_height, preset.scene.ceiling_height,
+              0.03 * preset.scene.ceiling_height);
+  EXPECT_NE(checked.fallback.find("baseboard"), std::string::npos) << checked.fallback;
+}
+
+// Where both ceiling junctions already agree (a frame of the same corridor with both junctions
+// right), nothing changes.
+TEST(BaseboardCheckTest, AgreeingCeilingJunctionsChangeNothing) {
+  const synth::ScenePreset preset = E01();
+  synth::Frame frame;
+  ASSERT_TRUE(
+      synth::RenderFrame(synth::BuildScene(preset.scene), preset.camera, preset.poses.at(6), &frame)
+          .ok());
+  RecoverDepthOptions off;
+  off.ceiling_checks_baseboards = false;
+  RecoverDepthResult a, b;
+  ASSERT_TRUE(RecoverDepth(frame.bgr, preset.camera, off, &a).ok());
+  ASSERT_TRUE(RecoverDepth(frame.bgr, preset.camera, RecoverDepthOptions(), &b).ok());
+  EXPECT_NEAR(a.geometry.width, frame.truth.width, 0.03 * frame.truth.width);
+  EXPECT_EQ(a.geometry.width, b.geometry.width);
+  EXPECT_EQ(a.geometry.offset, b.geometry.offset);
+  EXPECT_TRUE(b.fallback.empty()) << b.fallback;
+}
+
+}  // namespace
+}  // namespace corridor
