@@ -17,14 +17,13 @@ namespace {
 
 constexpr int kMinImageSide = 24;  // Smaller images cannot show a corridor.
 
-// Edge pixels of the ROI on the floor side of the vanishing point (left or right of it, and below
-// it), in full-image coordinates and in the edge map's order.
-std::vector<Eigen::Vector2d> FloorSidePixels(const std::vector<cv::Point>& edges, int roi_top,
+// Edge pixels of the ROI (full-image coordinates) on the floor side of the vanishing point (left
+// or right of it, and below it), in the edge map's order.
+std::vector<Eigen::Vector2d> FloorSidePixels(const std::vector<Eigen::Vector2d>& edges,
                                              const Eigen::Vector2d& vp, bool left) {
   std::vector<Eigen::Vector2d> side;
   side.reserve(edges.size());
-  for (const auto& e : edges) {
-    const Eigen::Vector2d p(e.x, e.y + roi_top);
+  for (const auto& p : edges) {
     if (left ? p.x() > vp.x() : p.x() < vp.x()) continue;
     if (p.y() < vp.y()) continue;
     side.push_back(p);
@@ -103,12 +102,12 @@ bool RefitLine(const std::vector<Eigen::Vector2d>& points, Eigen::Vector3d* line
 }
 
 // The final JunctionLine: refit on nearby edge pixels, extent and confidence.
-JunctionLine Refine(const JunctionCandidate& candidate, const std::vector<cv::Point>& edges,
-                    int roi_top, const Eigen::Vector2d& vp, bool left, double distance,
+JunctionLine Refine(const JunctionCandidate& candidate, const std::vector<Eigen::Vector2d>& edges,
+                    const Eigen::Vector2d& vp, bool left, double distance,
                     double image_height) {
   JunctionLine out;
   Eigen::Vector3d line = candidate.line.line;
-  const std::vector<Eigen::Vector2d> side = FloorSidePixels(edges, roi_top, vp, left);
+  const std::vector<Eigen::Vector2d> side = FloorSidePixels(edges, vp, left);
   std::vector<Eigen::Vector2d> support, fitted;  // `fitted`: the pixels `line` was fitted to.
   bool final_support = false;  // True once `support` is the final (distance, line) support.
   for (int round = 0; round < 3; ++round) {
@@ -154,8 +153,9 @@ JunctionLine Refine(const JunctionCandidate& candidate, const std::vector<cv::Po
 // like the floor's edge, refined on its edge pixels, and where the other lines (grout, baseboards, other
 // wall lines along the corridor) meet it: the length-weighted median crossing above its support.
 void KeepSingleJunction(const std::vector<JunctionCandidate>& side, bool is_left,
-                        const std::vector<MergedLine>& lines, const std::vector<cv::Point>& edges,
-                        int roi_top, const JunctionDetectorOptions& options, int height,
+                        const std::vector<MergedLine>& lines,
+                        const std::vector<Eigen::Vector2d>& edges,
+                        const JunctionDetectorOptions& options, int height,
                         JunctionPair* result) {
   // Among the lines with floor below and something else above, the outermost: grout lines and
   // reflections lie inside the floor, baseboard tops and door bottoms have no floor below.
@@ -175,7 +175,7 @@ void KeepSingleJunction(const std::vector<JunctionCandidate>& side, bool is_left
   if (!found) return;  // No line looks like the floor's edge.
   const MergedLine& m = side[best].line;
   const Eigen::Vector2d top = m.start.y() < m.end.y() ? m.start : m.end;
-  result->single = Refine(side[best], edges, roi_top, top, is_left, options.support_distance_px,
+  result->single = Refine(side[best], edges, top, is_left, options.support_distance_px,
                           height);
   result->single_is_left = is_left;
   result->has_single = true;
@@ -250,6 +250,9 @@ bool JunctionDetectorOptions::Check(std::string* why) const {
     reason = "support_distance_px must be positive";
   } else if (!(max_edge_density > 0 && max_edge_density <= 1)) {
     reason = "max_edge_density must be in (0, 1]";
+  } else if (max_work_width != 0 && max_work_width < 2 * kMinImageSide) {
+    reason = "max_work_width must be 0 (full resolution) or at least " +
+             std::to_string(2 * kMinImageSide) + " px";
   }
   if (reason.empty()) return true;
   if (why != nullptr) *why = reason;
@@ -291,12 +294,37 @@ Status DetectJunctions(const cv::Mat& bgr, const JunctionDetectorOptions& option
   }
   const int roi_top =
       std::clamp(static_cast<int>(options.roi_top_fraction * height), 0, height - kMinImageSide / 2);
+  // Edges and segments at the working resolution: the image halved until it fits
+  // max_work_width. Pixel i of an image halved to 1/scale is centred on full-image pixel
+  // scale * i + (scale - 1) / 2.
+  cv::Mat work = color;
+  int scale = 1;
+  while (options.max_work_width > 0 && work.cols > options.max_work_width) {
+    cv::pyrDown(work, work);
+    scale *= 2;
+  }
+  const int work_roi_top = roi_top / scale;
   const SegmentOptions segment_options{
       options.blur_sigma,           options.canny_high,
       options.canny_low_ratio,      options.canny_auto_percentile,
       options.canny_auto_min,       options.hough_threshold,
-      std::max(8.0, options.hough_min_length_fraction * height), options.hough_max_gap};
-  EdgeSegments found = DetectSegments(color, roi_top, segment_options);
+      std::max(8.0, options.hough_min_length_fraction * work.rows), options.hough_max_gap};
+  EdgeSegments found = DetectSegments(work, work_roi_top, segment_options);
+  const double shift = 0.5 * (scale - 1);
+  for (cv::Vec4f& segment : found.segments) {
+    for (int k = 0; k < 4; ++k) segment[k] = static_cast<float>(scale * segment[k] + shift);
+  }
+  // Edge pixels in full-image coordinates, for the refits.
+  const auto edge_points = [&]() {
+    std::vector<cv::Point> pixels;
+    cv::findNonZero(found.edges, pixels);
+    std::vector<Eigen::Vector2d> points;
+    points.reserve(pixels.size());
+    for (const cv::Point& p : pixels) {
+      points.emplace_back(scale * p.x + shift, scale * (p.y + work_roi_top) + shift);
+    }
+    return points;
+  };
   const double edge_density =
       cv::countNonZero(found.edges) / static_cast<double>(std::max<size_t>(1, found.edges.total()));
   if (edge_density > options.max_edge_density) {
@@ -336,10 +364,8 @@ Status DetectJunctions(const cv::Mat& bgr, const JunctionDetectorOptions& option
         << lines.size() << " lines";
     const Status status = NoCorridor(result, msg.str());
     if (!left.empty() || !right.empty()) {
-      std::vector<cv::Point> edge_pixels;
-      cv::findNonZero(found.edges, edge_pixels);
       KeepSingleJunction(left.empty() ? right : left, left.empty() ? false : true, lines,
-                         edge_pixels, roi_top, options, height, result);
+                         edge_points(), options, height, result);
     }
     return status;
   }
@@ -347,20 +373,18 @@ Status DetectJunctions(const cv::Mat& bgr, const JunctionDetectorOptions& option
   if (pair.left < 0) {
     return NoCorridor(result, "no pair of lines meets at a vanishing point above the floor");
   }
-  std::vector<cv::Point> edge_pixels;
-  cv::findNonZero(found.edges, edge_pixels);
-  result->left = Refine(left[pair.left], edge_pixels, roi_top, pair.vanishing_point, true,
-                        options.support_distance_px, height);
-  result->right = Refine(right[pair.right], edge_pixels, roi_top, pair.vanishing_point, false,
-                         options.support_distance_px, height);
+  const std::vector<Eigen::Vector2d> edges = edge_points();
+  const double distance = options.support_distance_px;
+  result->left = Refine(left[pair.left], edges, pair.vanishing_point, true, distance, height);
+  result->right = Refine(right[pair.right], edges, pair.vanishing_point, false, distance, height);
   if (pair.left_lower >= 0) {
-    result->left_lower = Refine(left[pair.left_lower], edge_pixels, roi_top, pair.vanishing_point,
-                                true, options.support_distance_px, height);
+    result->left_lower =
+        Refine(left[pair.left_lower], edges, pair.vanishing_point, true, distance, height);
     result->has_left_lower = true;
   }
   if (pair.right_lower >= 0) {
-    result->right_lower = Refine(right[pair.right_lower], edge_pixels, roi_top,
-                                 pair.vanishing_point, false, options.support_distance_px, height);
+    result->right_lower =
+        Refine(right[pair.right_lower], edges, pair.vanishing_point, false, distance, height);
     result->has_right_lower = true;
   }
   const Eigen::Vector3d vp = result->left.line.cross(result->right.line);

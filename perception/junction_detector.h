@@ -29,6 +29,7 @@ struct JunctionDetectorOptions {
   double max_inclination_deg = 80;   // Scene prior: steepest junction, degrees from horizontal (the paper: 90 - atan(H/W), set -1).
   double support_distance_px = 2.0;  // Edge pixels this close to a chosen line support its refit.
   double max_edge_density = 0.2;     // More edge pixels than this fraction of the ROI: noise or texture, not a corridor.
+  int max_work_width = 640;          // Wider images are halved (pyrDown) until they fit before edges and lines are found; 0 = full resolution.
 
   bool Check(std::string* why) const;
 };

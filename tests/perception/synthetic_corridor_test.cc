@@ -1,6 +1,7 @@
 // The detector on frames of the generator (an independent ray caster): the detected junctions
 // against the true ones, projected by hand from the frame's truth.
 #include <cmath>
+#include <cstdio>
 
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
@@ -59,6 +60,59 @@ TEST(SyntheticCorridorTest, DetectedJunctionsMatchTheTrueOnes) {
   }
   EXPECT_EQ(checked, 24);
   EXPECT_GE(close, 20);
+}
+
+// 1280x720 frames, their lines found at the working resolution (halved to 640 px) and at full
+// resolution: the halved search finds about as many junctions within 1 degree and 4 px of the
+// truth (at both ends of their support) as the full one, and most of them.
+TEST(SyntheticCorridorTest, WorkingResolutionKeepsTheLinesOfLargeImages) {
+  const Camera camera = Camera::FromHorizontalFov(1280, 720, 85.0 * M_PI / 180, 0.7);
+  JunctionDetectorOptions full, halved;
+  full.max_work_width = 0;
+  ASSERT_EQ(halved.max_work_width, 640);
+  int close[2] = {0, 0}, total = 0;
+  for (const uint32_t seed : {7u, 8u}) {
+    synth::SceneOptions scene;
+    scene.width = seed == 7 ? 2.4 : 2.0;
+    scene.clutter = 0.1;
+    scene.seed = seed;
+    const synth::CorridorScene built = synth::BuildScene(scene);
+    for (const double yaw : {-0.06, 0.0, 0.05}) {
+      const synth::CameraPose pose{0.05, yaw, 0.2, 0.7, 3.0};
+      synth::Frame frame;
+      ASSERT_TRUE(synth::RenderFrame(built, camera, pose, &frame).ok());
+      for (int k = 0; k < 2; ++k) {
+        JunctionPair found;
+        ASSERT_TRUE(DetectJunctions(frame.bgr, k == 0 ? full : halved, &found).ok());
+        if (!found.status.ok()) continue;
+        for (int side = -1; side <= 1; side += 2) {
+          const Eigen::Vector3d truth = TrueJunction(frame.truth, camera, side);
+          const JunctionLine& line = side < 0 ? found.left : found.right;
+          const double angle_deg =
+              std::acos(std::min(1.0, std::abs(truth.head<2>().dot(line.line.head<2>())))) *
+              180 / M_PI;
+          const double offset_px = std::max(std::abs(truth.dot(line.near_end.homogeneous())),
+                                            std::abs(truth.dot(line.far_end.homogeneous())));
+          close[k] += angle_deg < 1.0 && offset_px < 4.0;
+        }
+      }
+      total += 2;
+    }
+  }
+  std::printf("within 1 deg and 4 px: full resolution %d, halved %d, of %d\n", close[0], close[1],
+              total);
+  EXPECT_GE(close[1], close[0] - 1);
+  EXPECT_GE(close[1], total * 3 / 4);
+}
+
+TEST(SyntheticCorridorTest, WorkingWidthBelowTwiceTheSmallestImageIsRejected) {
+  JunctionDetectorOptions options;
+  options.max_work_width = 20;
+  std::string why;
+  EXPECT_FALSE(options.Check(&why));
+  EXPECT_NE(why.find("max_work_width"), std::string::npos) << why;
+  options.max_work_width = 0;
+  EXPECT_TRUE(options.Check(&why));
 }
 
 }  // namespace
