@@ -116,6 +116,11 @@ bool RecoverDepthOptions::Check(std::string* why) const {
 
 namespace {
 
+// Adds how the geometry came about to result->fallback ("; " between notes).
+void AddFallbackNote(const std::string& how, RecoverDepthResult* result) {
+  result->fallback += (result->fallback.empty() ? "" : "; ") + how;
+}
+
 // In a sequence, a width much narrower than the previous frame's means that one junction is wrong
 // (a box edge or a grout line taken for it): the wall that moved less since the previous frame
 // stays, and the other one is put at the previous width from it.
@@ -140,7 +145,7 @@ void HoldWidth(const CorridorGeometry& previous, double max_change, CorridorGeom
   g->offset = keep_left ? kept - 0.5 * previous.width : 0.5 * previous.width - kept;
   g->width = previous.width;
   result->width_held = true;
-  result->fallback += (result->fallback.empty() ? "" : "; ") + how.str();
+  AddFallbackNote(how.str(), result);
 }
 
 // Both ceiling junctions, each searched alone, strong enough to compare: how far apart their
@@ -339,8 +344,8 @@ void DepthRecoverer::CheckBaseboards(const Camera& camera, CorridorGeometry* geo
   SolverSummary best_summary;
   CeilingEstimate best_ceiling;
   for (int side = 0; side < 2; ++side) {
-    const bool has = side == 0 ? result->junctions.has_left_lower : result->junctions.has_right_lower;
-    if (!has) continue;
+    const JunctionPair& found = result->junctions;
+    if (!(side == 0 ? found.has_left_lower : found.has_right_lower)) continue;
     JunctionPair pair = result->junctions;
     (side == 0 ? pair.left : pair.right) = side == 0 ? pair.left_lower : pair.right_lower;
     const CorridorObservation observation =
@@ -375,10 +380,10 @@ void DepthRecoverer::CheckBaseboards(const Camera& camera, CorridorGeometry* geo
   result->ceiling = best_ceiling;
   best_geometry.ceiling_height = best_ceiling.height;
   *geometry = best_geometry;
-  const std::string how = std::string(best_side == 0 ? "left" : "right") +
-                          " junction: the lower of two parallel lines (the upper one a "
-                          "baseboard's top), with which both ceiling junctions agree";
-  result->fallback += (result->fallback.empty() ? "" : "; ") + how;
+  AddFallbackNote(std::string(best_side == 0 ? "left" : "right") +
+                      " junction: the lower of two parallel lines (the upper one a baseboard's "
+                      "top), with which both ceiling junctions agree",
+                  result);
 }
 
 Status RecoverDepth(const cv::Mat& image, const Camera& camera, const RecoverDepthOptions& options,

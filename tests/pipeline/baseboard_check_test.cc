@@ -39,7 +39,8 @@ TEST(BaseboardCheckTest, TheCeilingPicksTheLowerOfTwoParallelLines) {
   RecoverDepthResult checked;
   ASSERT_TRUE(RecoverDepth(frame.bgr, preset.camera, RecoverDepthOptions(), &checked).ok());
   EXPECT_NEAR(checked.geometry.width, truth.width, 0.02 * truth.width);
-  EXPECT_NEAR(checked.geometry.RightDistance(), truth.RightDistance(), 0.03 * truth.RightDistance());
+  EXPECT_NEAR(checked.geometry.RightDistance(), truth.RightDistance(),
+              0.03 * truth.RightDistance());
   EXPECT_NEAR(checked.geometry.ceiling_height, preset.scene.ceiling_height,
               0.03 * preset.scene.ceiling_height);
   EXPECT_NE(checked.fallback.find("baseboard"), std::string::npos) << checked.fallback;

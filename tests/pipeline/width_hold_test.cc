@@ -16,7 +16,8 @@ namespace {
 
 struct HiddenJunction {
   Camera camera;
-  synth::Frame frame;             // Frame 10 of the paper preset's Cord_E05: a box hides the right junction.
+  synth::Frame frame;             // Frame 10 of the paper preset's Cord_E05: a box hides the
+                                  // right junction.
   synth::Frame before;            // Frame 9, where both junctions are seen.
   CorridorGeometry previous;      // The true geometry of frame 9.
 };
