@@ -230,10 +230,11 @@ Status DepthRecoverer::Create(const RecoverDepthOptions& options,
 }
 
 Status DepthRecoverer::Recover(const cv::Mat& image, const Camera& camera,
-                               RecoverDepthResult* result) const {
+                               RecoverDepthResult* result,
+                               const CorridorGeometry* previous) const {
   const auto start = Clock::now();
   Detect(image, camera, result);
-  if (result->ReadyToReconstruct()) Reconstruct(camera, result);
+  if (result->ReadyToReconstruct()) Reconstruct(camera, result, previous);
   result->times.total = SecondsSince(start);
   return result->status;
 }

@@ -88,8 +88,10 @@ class DepthRecoverer {
 
   // One frame: 8- or 16-bit, grey, grey+alpha, BGR or BGRA, of the camera's size. The camera
   // must hold a positive mount height. Returns result->status.
-  // Equivalent to Detect followed, when it succeeds, by Reconstruct.
-  Status Recover(const cv::Mat& image, const Camera& camera, RecoverDepthResult* result) const;
+  // Equivalent to Detect followed, when it succeeds, by Reconstruct (with `previous`, which may
+  // be null: the previous frame's geometry in a sequence, see Reconstruct).
+  Status Recover(const cv::Mat& image, const Camera& camera, RecoverDepthResult* result,
+                 const CorridorGeometry* previous = nullptr) const;
 
   // The two halves of Recover, for the paper's two-thread pipeline: Detect checks the inputs and
   // finds the junction lines (the edge-extraction thread); Reconstruct estimates the geometry

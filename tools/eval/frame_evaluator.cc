@@ -91,14 +91,9 @@ Status EvaluateFrame(const InputScene& scene, size_t index, const DepthRecoverer
   RecoverDepthResult result;
   if (status.ok()) {
     record->ran = true;
-    if (prior == nullptr) {
-      status = recoverer.Recover(image, scene.camera, &result);
-    } else {
-      recoverer.Detect(image, scene.camera, &result);
-      if (result.ReadyToReconstruct()) recoverer.Reconstruct(scene.camera, &result, prior->Previous());
-      prior->Update(result);
-      status = result.status;
-    }
+    status = recoverer.Recover(image, scene.camera, &result,
+                               prior != nullptr ? prior->Previous() : nullptr);
+    if (prior != nullptr) prior->Update(result);
     record->times = result.times;
   }
   record->status = status;
