@@ -19,12 +19,19 @@ synth::ScenePreset E01() {
   return synth::ScenePreset();
 }
 
+// Frame `pose` of Cord_E01 (empty when it cannot be rendered).
+synth::Frame RenderE01(const synth::ScenePreset& preset, size_t pose) {
+  synth::Frame frame;
+  EXPECT_TRUE(
+      synth::RenderFrame(synth::BuildScene(preset.scene), preset.camera, preset.poses.at(pose), &frame)
+          .ok());
+  return frame;
+}
+
 TEST(BaseboardCheckTest, TheCeilingPicksTheLowerOfTwoParallelLines) {
   const synth::ScenePreset preset = E01();
-  synth::Frame frame;
-  ASSERT_TRUE(
-      synth::RenderFrame(synth::BuildScene(preset.scene), preset.camera, preset.poses.at(0), &frame)
-          .ok());
+  const synth::Frame frame = RenderE01(preset, 0);
+  ASSERT_FALSE(frame.bgr.empty());
   const CorridorGeometry& truth = frame.truth;
 
   RecoverDepthOptions off;
@@ -50,10 +57,8 @@ TEST(BaseboardCheckTest, TheCeilingPicksTheLowerOfTwoParallelLines) {
 // right), nothing changes.
 TEST(BaseboardCheckTest, AgreeingCeilingJunctionsChangeNothing) {
   const synth::ScenePreset preset = E01();
-  synth::Frame frame;
-  ASSERT_TRUE(
-      synth::RenderFrame(synth::BuildScene(preset.scene), preset.camera, preset.poses.at(6), &frame)
-          .ok());
+  const synth::Frame frame = RenderE01(preset, 6);
+  ASSERT_FALSE(frame.bgr.empty());
   RecoverDepthOptions off;
   off.ceiling_checks_baseboards = false;
   RecoverDepthResult a, b;
