@@ -29,16 +29,25 @@ function(corridor_add_executable name)
   target_link_libraries(${name} PRIVATE ${ARG_DEPS})
 endfunction()
 
+# The definitions every test binary (and the tests' shared precompiled header) compiles with.
+set(CORRIDOR_TEST_DEFINITIONS
+  CORRIDOR_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
+  CORRIDOR_SHARED_DIR="${PROJECT_SOURCE_DIR}/../shared"
+  CORRIDOR_BINARY_DIR="${PROJECT_BINARY_DIR}")
+
+# What the tests' shared precompiled header includes from, linked into every test binary.
+set(CORRIDOR_TEST_PCH_DEPS GTest::gtest opencv_core opencv_imgproc Eigen3::Eigen)
+
 # corridor_add_test(NAME SOURCES ... DEPS ...): a GoogleTest binary registered with ctest.
 function(corridor_add_test name)
   cmake_parse_arguments(ARG "" "" "SOURCES;DEPS;LABELS" ${ARGN})
   add_executable(${name} ${ARG_SOURCES})
   target_compile_options(${name} PRIVATE ${CORRIDOR_WARNINGS})
-  target_link_libraries(${name} PRIVATE ${ARG_DEPS} GTest::gtest GTest::gtest_main)
-  target_compile_definitions(${name} PRIVATE
-    CORRIDOR_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
-    CORRIDOR_SHARED_DIR="${PROJECT_SOURCE_DIR}/../shared"
-    CORRIDOR_BINARY_DIR="${PROJECT_BINARY_DIR}")
+  target_link_libraries(${name} PRIVATE ${ARG_DEPS} ${CORRIDOR_TEST_PCH_DEPS} GTest::gtest_main)
+  target_compile_definitions(${name} PRIVATE ${CORRIDOR_TEST_DEFINITIONS})
+  if(TARGET corridor_test_pch)
+    target_precompile_headers(${name} REUSE_FROM corridor_test_pch)
+  endif()
   include(GoogleTest)
   gtest_discover_tests(${name} TEST_PREFIX "${name}." DISCOVERY_TIMEOUT 60
                        PROPERTIES LABELS "${ARG_LABELS}")
