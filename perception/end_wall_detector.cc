@@ -7,9 +7,10 @@
 #include <opencv2/imgproc.hpp>
 
 #include "core/corridor_frame.h"
-#include "perception/corridor_projection.h"
 #include "perception/appearance.h"
 #include "perception/color_gradient.h"
+#include "perception/corridor_projection.h"
+#include "perception/working_image.h"
 
 namespace corridor {
 namespace {
@@ -182,17 +183,9 @@ Status DetectEndWall(const cv::Mat& full_bgr, const Camera& full_camera, const C
     return Status::InvalidArgument("end wall detector: image does not match the camera");
   }
   // Large images are searched at half resolution (or less), with the camera scaled to match.
-  cv::Mat bgr = full_bgr;
-  Camera camera = full_camera;
-  while (bgr.cols > o.max_work_width) {
-    cv::pyrDown(bgr, bgr);
-    camera.image_width = bgr.cols;
-    camera.image_height = bgr.rows;
-    camera.fx *= 0.5;
-    camera.fy *= 0.5;
-    camera.cx = (camera.cx + 0.5) * 0.5 - 0.5;
-    camera.cy = (camera.cy + 0.5) * 0.5 - 0.5;
-  }
+  const WorkingImage work = HalveToWidth(full_bgr, full_camera, o.max_work_width);
+  const cv::Mat& bgr = work.bgr;
+  const Camera& camera = work.camera;
   // Edges of the colour gradient: a dark baseboard on a dark floor has no grey edge.
   cv::Mat smooth, dx, dy, edges;
   cv::GaussianBlur(bgr, smooth, cv::Size(0, 0), 1.0);

@@ -295,8 +295,9 @@ Status DetectJunctions(const cv::Mat& bgr, const JunctionDetectorOptions& option
   const int roi_top =
       std::clamp(static_cast<int>(options.roi_top_fraction * height), 0, height - kMinImageSide / 2);
   // Edges and segments at the working resolution: the image halved until it fits
-  // max_work_width. Pixel i of an image halved to 1/scale is centred on full-image pixel
-  // scale * i + (scale - 1) / 2.
+  // max_work_width. cv::pyrDown's 5-tap kernel is centred on every second pixel, so pixel i of an
+  // image halved to 1/scale lies at full-image pixel scale * i (an impulse at pixel 2k comes out
+  // centred on k).
   cv::Mat work = color;
   int scale = 1;
   while (options.max_work_width > 0 && work.cols > options.max_work_width) {
@@ -310,9 +311,8 @@ Status DetectJunctions(const cv::Mat& bgr, const JunctionDetectorOptions& option
       options.canny_auto_min,       options.hough_threshold,
       std::max(8.0, options.hough_min_length_fraction * work.rows), options.hough_max_gap};
   EdgeSegments found = DetectSegments(work, work_roi_top, segment_options);
-  const double shift = 0.5 * (scale - 1);
   for (cv::Vec4f& segment : found.segments) {
-    for (int k = 0; k < 4; ++k) segment[k] = static_cast<float>(scale * segment[k] + shift);
+    for (int k = 0; k < 4; ++k) segment[k] = static_cast<float>(scale * segment[k]);
   }
   // Edge pixels in full-image coordinates, for the refits.
   const auto edge_points = [&]() {
@@ -321,7 +321,7 @@ Status DetectJunctions(const cv::Mat& bgr, const JunctionDetectorOptions& option
     std::vector<Eigen::Vector2d> points;
     points.reserve(pixels.size());
     for (const cv::Point& p : pixels) {
-      points.emplace_back(scale * p.x + shift, scale * (p.y + work_roi_top) + shift);
+      points.emplace_back(scale * p.x, scale * (p.y + work_roi_top));
     }
     return points;
   };

@@ -102,6 +102,8 @@ bool RecoverDepthOptions::Check(std::string* why) const {
     reason = "max_width_change must be in [0, 1) (0 = off)";
   } else if (!(ceiling_height >= 0 && std::isfinite(ceiling_height))) {
     reason = "ceiling_height must be >= 0 (0 = unknown)";
+  } else if (search_max_width != 0 && search_max_width < 64) {
+    reason = "search_max_width must be 0 (full resolution) or at least 64 px";
   } else if (!perception.Check(&reason)) {
     reason = "perception: " + reason;
   } else if (!ceiling.Check(&reason)) {
@@ -306,19 +308,27 @@ Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* res
   }
   geometry.ceiling_height = options_.ceiling_height;
   stage = Clock::now();
-  if (options_.ceiling_height <= 0 && options_.estimate_ceiling && !result->image.empty()) {
-    status = DetectCeiling(result->image, camera, geometry, options_.ceiling, &result->ceiling);
+  // The ceiling and end-wall searches share one image at the search resolution.
+  const bool search_ceiling =
+      options_.ceiling_height <= 0 && options_.estimate_ceiling && !result->image.empty();
+  const bool search_end_wall = options_.estimate_end_wall && !result->image.empty();
+  WorkingImage search;
+  if (search_ceiling || search_end_wall) {
+    search = HalveToWidth(result->image, camera, options_.search_max_width);
+  }
+  if (search_ceiling) {
+    status = DetectCeiling(search.bgr, search.camera, geometry, options_.ceiling, &result->ceiling);
     if (!status.ok()) return finish(status);
     if (result->ceiling.found) geometry.ceiling_height = result->ceiling.height;
     if (options_.ceiling_checks_baseboards && result->junctions.status.ok() &&
         !result->width_held) {
-      CheckBaseboards(camera, &geometry, result);
+      CheckBaseboards(camera, search, &geometry, result);
     }
   }
   result->times.ceiling = SecondsSince(stage);
   stage = Clock::now();
-  if (options_.estimate_end_wall && !result->image.empty()) {
-    status = DetectEndWall(result->image, camera, geometry, options_.end_wall, &result->end_wall);
+  if (search_end_wall) {
+    status = DetectEndWall(search.bgr, search.camera, geometry, options_.end_wall, &result->end_wall);
     if (!status.ok()) return finish(status);
     if (result->end_wall.found) geometry.end_distance = result->end_wall.distance;
   }
@@ -332,8 +342,8 @@ Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* res
   return finish(status);
 }
 
-void DepthRecoverer::CheckBaseboards(const Camera& camera, CorridorGeometry* geometry,
-                                     RecoverDepthResult* result) const {
+void DepthRecoverer::CheckBaseboards(const Camera& camera, const WorkingImage& search,
+                                     CorridorGeometry* geometry, RecoverDepthResult* result) const {
   // Heights that agree within 6% need no check; a lower line must bring them within 8%, and to
   // less than half the disagreement.
   const double agree = std::log(1.06), accept = std::log(1.08);
@@ -359,7 +369,7 @@ void DepthRecoverer::CheckBaseboards(const Camera& camera, CorridorGeometry* geo
       continue;
     }
     CeilingEstimate ceiling;
-    if (!DetectCeiling(result->image, camera, g, options_.ceiling, &ceiling).ok()) continue;
+    if (!DetectCeiling(search.bgr, search.camera, g, options_.ceiling, &ceiling).ok()) continue;
     const double after = CeilingDisagreement(ceiling, g.camera_height);
     if (after < 0 || after > accept || after > 0.5 * best) continue;
     best = after;

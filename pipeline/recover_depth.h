@@ -15,6 +15,7 @@
 #include "perception/end_wall_detector.h"
 #include "perception/junction_detector.h"
 #include "perception/junction_lines.h"
+#include "perception/working_image.h"
 
 namespace corridor {
 
@@ -42,6 +43,7 @@ struct RecoverDepthOptions {
                                            // wrong (a box edge or grout line taken for it): the previous width is held from the wall that moved less (0 = off).
   bool estimate_end_wall = true;           // Look for a wall across the corridor where both junctions end.
   EndWallDetectorOptions end_wall;         // End-wall search (beyond the paper).
+  int search_max_width = 640;              // Wider images are halved (pyrDown) until they fit, one copy shared by the ceiling and end-wall searches, px (0 = full resolution).
 
   bool Check(std::string* why) const;
 };
@@ -111,7 +113,8 @@ class DepthRecoverer {
   // ceiling_checks_baseboards: when both ceiling junctions were searched alone and disagree, and
   // a side has a lower parallel line, the geometry and ceiling with that line instead, if they
   // make the two agree. Updates *geometry and *result (junctions, solver summary, ceiling).
-  void CheckBaseboards(const Camera& camera, CorridorGeometry* geometry,
+  // `search` is the image and camera the ceiling search runs on (search_max_width).
+  void CheckBaseboards(const Camera& camera, const WorkingImage& search, CorridorGeometry* geometry,
                        RecoverDepthResult* result) const;
 
   const RecoverDepthOptions options_;

@@ -30,6 +30,9 @@ DEFINE_double(max_width_change, 0.15,
 DEFINE_bool(end_wall, true,
             "Look for a wall across the corridor where both junctions end, and close the depth "
             "there (beyond the paper)");
+DEFINE_int32(search_max_width, 640,
+             "Wider images are halved before the ceiling and end-wall searches until they fit, px "
+             "(0 = full resolution)");
 DEFINE_int32(points_per_line, 30, "Points sampled along each junction line for the solver");
 DEFINE_double(roi_top, 0.5, "Junction search region starts at this fraction of the image height");
 
@@ -46,6 +49,7 @@ Status RecoverDepthOptionsFromFlags(RecoverDepthOptions* options) {
   options->width_prior = FLAGS_width_prior;
   options->max_width_change = FLAGS_max_width_change;
   options->points_per_line = FLAGS_points_per_line;
+  options->search_max_width = FLAGS_search_max_width;
   options->perception.roi_top_fraction = FLAGS_roi_top;
   std::unique_ptr<DepthRecoverer> probe;
   return DepthRecoverer::Create(*options, &probe);

@@ -1,0 +1,80 @@
+// HalveToWidth: the halved image's size and the camera that matches it, checked against where
+// cv::pyrDown itself puts a bright pixel (measured, not assumed); and the ceiling search at the halved resolution on a 1280x720 render, against
+// the generator's ceiling height.
+#include "perception/working_image.h"
+
+#include <gtest/gtest.h>
+#include <opencv2/imgproc.hpp>
+
+#include "perception/ceiling_detector.h"
+#include "synth/corridor_renderer.h"
+
+namespace corridor {
+namespace {
+
+TEST(WorkingImageTest, HalvesUntilItFitsAndScalesTheCamera) {
+  Camera camera = Camera::FromHorizontalFov(1280, 720, 80.0 * M_PI / 180, 1.1);
+  camera.cx = 650.25;
+  camera.cy = 340.75;
+  camera.distortion = {-0.12, 0.03, 0.001, -0.002, 0.0};
+  const cv::Mat image(720, 1280, CV_8UC3, cv::Scalar(10, 20, 30));
+  const WorkingImage work = HalveToWidth(image, camera, 400);
+  EXPECT_EQ(work.scale, 4);  // 1280 -> 640 -> 320.
+  EXPECT_EQ(work.bgr.cols, 320);
+  EXPECT_EQ(work.bgr.rows, 180);
+  EXPECT_EQ(work.camera.image_width, 320);
+  EXPECT_EQ(work.camera.image_height, 180);
+  // Where cv::pyrDown moves a pixel: the centroid of an impulse's response, halved twice.
+  cv::Mat impulse = cv::Mat::zeros(64, 64, CV_32F);
+  impulse.at<float>(37, 22) = 1.0f;  // Row 37, column 22.
+  cv::Mat down;
+  cv::pyrDown(impulse, down);
+  cv::pyrDown(down, down);
+  const cv::Moments m = cv::moments(down);
+  const double x_ratio = (m.m10 / m.m00) / 22.0, y_ratio = (m.m01 / m.m00) / 37.0;
+  ASSERT_NEAR(x_ratio, 0.25, 1e-6);  // Pixel i goes to i / 4, with no shift.
+  ASSERT_NEAR(y_ratio, 0.25, 1e-6);
+  // The scaled camera must see every point where the halved image shows it.
+  for (const Eigen::Vector3d& p :
+       {Eigen::Vector3d(0.3, -0.2, 2.0), Eigen::Vector3d(-1.1, 0.4, 3.5)}) {
+    const Eigen::Vector2d full = camera.Distort(camera.Project(p));
+    const Eigen::Vector2d halved = work.camera.Distort(work.camera.Project(p));
+    EXPECT_NEAR(halved.x(), full.x() * x_ratio, 1e-6);
+    EXPECT_NEAR(halved.y(), full.y() * y_ratio, 1e-6);
+  }
+}
+
+TEST(WorkingImageTest, ANarrowEnoughImageIsLeftAlone) {
+  const Camera camera = Camera::FromHorizontalFov(640, 480, 70.0 * M_PI / 180, 1.0);
+  const cv::Mat image(480, 640, CV_8UC3, cv::Scalar(1, 2, 3));
+  for (const int max_width : {0, 640, 2000}) {
+    const WorkingImage work = HalveToWidth(image, camera, max_width);
+    EXPECT_EQ(work.scale, 1);
+    EXPECT_EQ(work.bgr.data, image.data);  // The same pixels, not a copy.
+    EXPECT_EQ(work.camera.fx, camera.fx);
+    EXPECT_EQ(work.camera.cx, camera.cx);
+  }
+}
+
+// The recoverer searches the ceiling of images wider than 640 px at half resolution (its
+// search_max_width): there it still lands within 3% of the truth.
+TEST(WorkingImageTest, TheCeilingOfALargeFrameIsFoundAtHalfResolution) {
+  const Camera camera = Camera::FromHorizontalFov(1280, 720, 85.0 * M_PI / 180, 0.7);
+  synth::SceneOptions scene;
+  scene.width = 2.2;
+  scene.ceiling_height = 2.8;
+  scene.seed = 5;
+  const synth::CorridorScene built = synth::BuildScene(scene);
+  synth::Frame frame;
+  ASSERT_TRUE(synth::RenderFrame(built, camera, {0.06, 0.04, 0.15, 0.7, 3.0}, &frame).ok());
+  const WorkingImage work = HalveToWidth(frame.bgr, camera, 640);
+  ASSERT_EQ(work.scale, 2);
+  CeilingEstimate estimate;
+  ASSERT_TRUE(
+      DetectCeiling(work.bgr, work.camera, frame.truth, CeilingDetectorOptions(), &estimate).ok());
+  ASSERT_TRUE(estimate.found) << estimate.reason;
+  EXPECT_NEAR(estimate.height, frame.truth.ceiling_height, 0.03 * frame.truth.ceiling_height);
+}
+
+}  // namespace
+}  // namespace corridor
