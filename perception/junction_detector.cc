@@ -297,22 +297,26 @@ Status DetectJunctions(const cv::Mat& bgr, const JunctionDetectorOptions& option
   // Edges and segments at the working resolution: the image halved until it fits
   // max_work_width. cv::pyrDown's 5-tap kernel is centred on every second pixel, so pixel i of an
   // image halved to 1/scale lies at full-image pixel scale * i (an impulse at pixel 2k comes out
-  // centred on k).
-  cv::Mat work = color;
+  // centred on k). Only the search region is halved, from crop_top (a multiple of scale, a few
+  // working rows above it for the kernel): working row j lies at image row crop_top + scale * j.
   int scale = 1;
-  while (options.max_work_width > 0 && work.cols > options.max_work_width) {
-    cv::pyrDown(work, work);
+  for (int w = width; options.max_work_width > 0 && w > options.max_work_width; w = (w + 1) / 2) {
     scale *= 2;
   }
-  const int work_roi_top = roi_top / scale;
+  const int crop_top = scale == 1 ? 0 : std::max(0, roi_top - 4 * scale) / scale * scale;
+  cv::Mat work = color.rowRange(crop_top, height);
+  for (int s = 1; s < scale; s *= 2) cv::pyrDown(work, work);
+  const int work_roi_top = roi_top / scale - crop_top / scale;
   const SegmentOptions segment_options{
       options.blur_sigma,           options.canny_high,
       options.canny_low_ratio,      options.canny_auto_percentile,
       options.canny_auto_min,       options.hough_threshold,
-      std::max(8.0, options.hough_min_length_fraction * work.rows), options.hough_max_gap};
+      std::max(8.0, options.hough_min_length_fraction * height / scale), options.hough_max_gap};
   EdgeSegments found = DetectSegments(work, work_roi_top, segment_options);
   for (cv::Vec4f& segment : found.segments) {
-    for (int k = 0; k < 4; ++k) segment[k] = static_cast<float>(scale * segment[k]);
+    for (int k = 0; k < 4; ++k) {
+      segment[k] = static_cast<float>(scale * segment[k] + (k % 2 == 1 ? crop_top : 0));
+    }
   }
   // Edge pixels in full-image coordinates, for the refits.
   const auto edge_points = [&]() {
@@ -321,7 +325,7 @@ Status DetectJunctions(const cv::Mat& bgr, const JunctionDetectorOptions& option
     std::vector<Eigen::Vector2d> points;
     points.reserve(pixels.size());
     for (const cv::Point& p : pixels) {
-      points.emplace_back(scale * p.x, scale * (p.y + work_roi_top));
+      points.emplace_back(scale * p.x, scale * (p.y + work_roi_top) + crop_top);
     }
     return points;
   };
