@@ -150,14 +150,14 @@ void HoldWidth(const CorridorGeometry& previous, double max_change, CorridorGeom
   AddFallbackNote(how.str(), result);
 }
 
-// Both ceiling junctions, each searched alone, strong enough to compare: how far apart their
+// Both ceiling junctions, each searched alone, with at least min_support: how far apart their
 // heights above the camera are, |log(a_l / a_r)|; negative when they cannot be compared.
-double CeilingDisagreement(const CeilingEstimate& ceiling, double camera_height) {
-  constexpr double kMinSupport = 0.45;
+double CeilingDisagreement(const CeilingEstimate& ceiling, double camera_height,
+                           double min_support = 0.45) {
   const double a_left = ceiling.side_height[0] - camera_height;
   const double a_right = ceiling.side_height[1] - camera_height;
-  if (!ceiling.found || ceiling.side_support[0] < kMinSupport ||
-      ceiling.side_support[1] < kMinSupport || !(a_left > 0.1) || !(a_right > 0.1)) {
+  if (!ceiling.found || ceiling.side_support[0] < min_support ||
+      ceiling.side_support[1] < min_support || !(a_left > 0.1) || !(a_right > 0.1)) {
     return -1;
   }
   return std::abs(std::log(a_left / a_right));
@@ -346,10 +346,15 @@ void DepthRecoverer::CheckBaseboards(const Camera& camera, const WorkingImage& s
                                      CorridorGeometry* geometry, RecoverDepthResult* result) const {
   // Heights that agree within 6% need no check; a lower line must bring them within 8%, and to
   // less than half the disagreement.
-  const double agree = std::log(1.06), accept = std::log(1.08);
+  // Without two sides strong enough to compare (as when the upper line has skewed the whole
+  // geometry, so that neither ceiling junction is where it is sought), a lower line must find
+  // both, each with the ceiling search's own minimum support, agreeing within 3%: two weak
+  // searches that agree that closely do not do so by chance.
+  const double agree = std::log(1.06), accept = std::log(1.08), weak_accept = std::log(1.03);
   const double before = CeilingDisagreement(result->ceiling, geometry->camera_height);
-  if (before <= agree) return;
-  double best = before;
+  if (before >= 0 && before <= agree) return;
+  const bool compared = before >= 0;
+  double best = compared ? before : 2 * weak_accept;
   int best_side = -1;
   CorridorGeometry best_geometry;
   SolverSummary best_summary;
@@ -370,8 +375,10 @@ void DepthRecoverer::CheckBaseboards(const Camera& camera, const WorkingImage& s
     }
     CeilingEstimate ceiling;
     if (!DetectCeiling(search.bgr, search.camera, g, options_.ceiling, &ceiling).ok()) continue;
-    const double after = CeilingDisagreement(ceiling, g.camera_height);
-    if (after < 0 || after > accept || after > 0.5 * best) continue;
+    const double after =
+        compared ? CeilingDisagreement(ceiling, g.camera_height)
+                 : CeilingDisagreement(ceiling, g.camera_height, options_.ceiling.min_support);
+    if (after < 0 || after > (compared ? accept : weak_accept) || after > 0.5 * best) continue;
     best = after;
     best_side = side;
     best_geometry = g;
