@@ -19,8 +19,6 @@ synth::ScenePreset Scene(const std::string& name) {
   return synth::ScenePreset();
 }
 
-synth::ScenePreset E01() { return Scene("Cord_E01"); }
-
 // Frame `pose` of a paper-preset scene (empty when it cannot be rendered).
 synth::Frame RenderPose(const synth::ScenePreset& preset, size_t pose) {
   synth::Frame frame;
@@ -30,65 +28,69 @@ synth::Frame RenderPose(const synth::ScenePreset& preset, size_t pose) {
   return frame;
 }
 
-TEST(BaseboardCheckTest, TheCeilingPicksTheLowerOfTwoParallelLines) {
-  const synth::ScenePreset preset = E01();
-  const synth::Frame frame = RenderPose(preset, 0);
-  ASSERT_FALSE(frame.bgr.empty());
-  const CorridorGeometry& truth = frame.truth;
+// One frame recovered with the baseboard check off (`upper`) and with the defaults (`checked`).
+struct BothRuns {
+  synth::ScenePreset preset;
+  synth::Frame frame;
+  RecoverDepthResult upper, checked;
+};
 
+void RecoverBoth(const std::string& scene, size_t pose, BothRuns* runs) {
+  runs->preset = Scene(scene);
+  runs->frame = RenderPose(runs->preset, pose);
+  ASSERT_FALSE(runs->frame.bgr.empty());
   RecoverDepthOptions off;
   off.ceiling_checks_baseboards = false;
-  RecoverDepthResult upper;
-  ASSERT_TRUE(RecoverDepth(frame.bgr, preset.camera, off, &upper).ok());
-  // The premise: the upper line gives a width far too wide, and a lower line was there.
-  ASSERT_GT(upper.geometry.width, 1.08 * truth.width);
-  ASSERT_TRUE(upper.junctions.has_left_lower || upper.junctions.has_right_lower);
-  EXPECT_TRUE(upper.fallback.empty()) << upper.fallback;
+  ASSERT_TRUE(RecoverDepth(runs->frame.bgr, runs->preset.camera, off, &runs->upper).ok());
+  ASSERT_TRUE(
+      RecoverDepth(runs->frame.bgr, runs->preset.camera, RecoverDepthOptions(), &runs->checked)
+          .ok());
+}
 
-  RecoverDepthResult checked;
-  ASSERT_TRUE(RecoverDepth(frame.bgr, preset.camera, RecoverDepthOptions(), &checked).ok());
-  EXPECT_NEAR(checked.geometry.width, truth.width, 0.02 * truth.width);
-  EXPECT_NEAR(checked.geometry.RightDistance(), truth.RightDistance(),
-              0.03 * truth.RightDistance());
-  EXPECT_NEAR(checked.geometry.ceiling_height, preset.scene.ceiling_height,
-              0.03 * preset.scene.ceiling_height);
-  EXPECT_NE(checked.fallback.find("baseboard"), std::string::npos) << checked.fallback;
+// The premise of both tests below: the upper line gives a width far too wide, and a lower line
+// was there.
+void ExpectUpperLineTooWide(const BothRuns& runs) {
+  EXPECT_GT(runs.upper.geometry.width, 1.08 * runs.frame.truth.width);
+  EXPECT_TRUE(runs.upper.junctions.has_left_lower || runs.upper.junctions.has_right_lower);
+}
+
+// ... and the lower one follows the truth, with a ceiling within 3% and a note that says so.
+void ExpectLowerLineTaken(const BothRuns& runs) {
+  const CorridorGeometry& truth = runs.frame.truth;
+  const double ceiling = runs.preset.scene.ceiling_height;
+  EXPECT_NEAR(runs.checked.geometry.width, truth.width, 0.02 * truth.width);
+  EXPECT_NEAR(runs.checked.geometry.ceiling_height, ceiling, 0.03 * ceiling);
+  EXPECT_NE(runs.checked.fallback.find("baseboard"), std::string::npos) << runs.checked.fallback;
+}
+
+TEST(BaseboardCheckTest, TheCeilingPicksTheLowerOfTwoParallelLines) {
+  BothRuns runs;
+  ASSERT_NO_FATAL_FAILURE(RecoverBoth("Cord_E01", 0, &runs));
+  ExpectUpperLineTooWide(runs);
+  EXPECT_TRUE(runs.upper.fallback.empty()) << runs.upper.fallback;
+  ExpectLowerLineTaken(runs);
+  EXPECT_NEAR(runs.checked.geometry.RightDistance(), runs.frame.truth.RightDistance(),
+              0.03 * runs.frame.truth.RightDistance());
 }
 
 // Frame 3 of Cord_H01: the upper line (a baseboard's top) skews the whole geometry, so that
 // neither ceiling junction is found where it is sought and the two cannot be compared at all.
 // The lower line gives a ceiling whose two sides, each searched alone, agree; it is taken.
 TEST(BaseboardCheckTest, ALowerLineThatMakesTheCeilingAgreeIsTakenWhenNoneWasComparable) {
-  const synth::ScenePreset preset = Scene("Cord_H01");
-  const synth::Frame frame = RenderPose(preset, 3);
-  ASSERT_FALSE(frame.bgr.empty());
-  const CorridorGeometry& truth = frame.truth;
-
-  RecoverDepthOptions off;
-  off.ceiling_checks_baseboards = false;
-  RecoverDepthResult upper;
-  ASSERT_TRUE(RecoverDepth(frame.bgr, preset.camera, off, &upper).ok());
-  // The premise: far too wide, a lower line there, and no two ceiling sides strong enough to
-  // compare (the stricter check's 0.45 support).
-  ASSERT_GT(upper.geometry.width, 1.08 * truth.width);
-  ASSERT_TRUE(upper.junctions.has_left_lower || upper.junctions.has_right_lower);
-  ASSERT_TRUE(!upper.ceiling.found || upper.ceiling.side_support[0] < 0.45 ||
-              upper.ceiling.side_support[1] < 0.45);
-
-  RecoverDepthResult checked;
-  ASSERT_TRUE(RecoverDepth(frame.bgr, preset.camera, RecoverDepthOptions(), &checked).ok());
-  EXPECT_NEAR(checked.geometry.width, truth.width, 0.02 * truth.width);
-  EXPECT_NEAR(checked.geometry.offset, truth.offset, 0.05);
-  ASSERT_TRUE(checked.ceiling.found);
-  EXPECT_NEAR(checked.ceiling.height, preset.scene.ceiling_height,
-              0.03 * preset.scene.ceiling_height);
-  EXPECT_NE(checked.fallback.find("baseboard"), std::string::npos) << checked.fallback;
+  BothRuns runs;
+  ASSERT_NO_FATAL_FAILURE(RecoverBoth("Cord_H01", 3, &runs));
+  ExpectUpperLineTooWide(runs);
+  // No two ceiling sides strong enough to compare (the stricter check's 0.45 support).
+  const CeilingEstimate& ceiling = runs.upper.ceiling;
+  EXPECT_TRUE(!ceiling.found || ceiling.side_support[0] < 0.45 || ceiling.side_support[1] < 0.45);
+  ExpectLowerLineTaken(runs);
+  EXPECT_NEAR(runs.checked.geometry.offset, runs.frame.truth.offset, 0.05);
 }
 
 // Where both ceiling junctions already agree (a frame of the same corridor with both junctions
 // right), nothing changes.
 TEST(BaseboardCheckTest, AgreeingCeilingJunctionsChangeNothing) {
-  const synth::ScenePreset preset = E01();
+  const synth::ScenePreset preset = Scene("Cord_E01");
   const synth::Frame frame = RenderPose(preset, 6);
   ASSERT_FALSE(frame.bgr.empty());
   RecoverDepthOptions off;
