@@ -8,9 +8,9 @@ namespace corridor {
 
 // An image searched at a lower resolution, with the camera that matches it.
 struct WorkingImage {
-  cv::Mat bgr;     // The image, halved (cv::pyrDown) `scale` times over; shares the input's data when not halved.
+  cv::Mat bgr;     // The image halved (cv::pyrDown) until it fits; the input's own pixels if not.
   Camera camera;   // The input camera scaled to bgr: f halved, principal point moved to match.
-  int scale = 1;   // Input pixels per working pixel (a power of two).
+  int scale = 1;   // Input pixels per working pixel: 2 to the number of halvings.
 };
 
 // Halves the image (cv::pyrDown) until it is at most max_width wide (0: never), and scales the

@@ -328,7 +328,8 @@ Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* res
   result->times.ceiling = SecondsSince(stage);
   stage = Clock::now();
   if (search_end_wall) {
-    status = DetectEndWall(search.bgr, search.camera, geometry, options_.end_wall, &result->end_wall);
+    status =
+        DetectEndWall(search.bgr, search.camera, geometry, options_.end_wall, &result->end_wall);
     if (!status.ok()) return finish(status);
     if (result->end_wall.found) geometry.end_distance = result->end_wall.distance;
   }

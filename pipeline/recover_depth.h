@@ -110,9 +110,10 @@ class DepthRecoverer {
  private:
   DepthRecoverer(const RecoverDepthOptions& options, std::unique_ptr<CorridorSolver> solver,
                  std::unique_ptr<DepthRasterizer> rasterizer);
-  // ceiling_checks_baseboards: when both ceiling junctions were searched alone and disagree, and
-  // a side has a lower parallel line, the geometry and ceiling with that line instead, if they
-  // make the two agree. Updates *geometry and *result (junctions, solver summary, ceiling).
+  // ceiling_checks_baseboards: when both ceiling junctions were searched alone and disagree (or
+  // were too weak to compare), and a side has a lower parallel line, the geometry and ceiling with
+  // that line instead, if they make the two agree. Updates *geometry and *result (junctions,
+  // solver summary, ceiling).
   // `search` is the image and camera the ceiling search runs on (search_max_width).
   void CheckBaseboards(const Camera& camera, const WorkingImage& search, CorridorGeometry* geometry,
                        RecoverDepthResult* result) const;

@@ -1,6 +1,6 @@
 // HalveToWidth: the halved image's size and the camera that matches it, checked against where
-// cv::pyrDown itself puts a bright pixel (measured, not assumed); and the ceiling search at the halved resolution on a 1280x720 render, against
-// the generator's ceiling height.
+// cv::pyrDown itself puts a bright pixel (measured, not assumed); and the ceiling search at the
+// halved resolution on a 1280x720 render, against the generator's ceiling height.
 #include "perception/working_image.h"
 
 #include <gtest/gtest.h>
