@@ -11,6 +11,7 @@
 #include "perception/appearance.h"
 #include "perception/junction_selector.h"
 #include "perception/line_segments.h"
+#include "perception/working_image.h"
 
 namespace corridor {
 namespace {
@@ -299,10 +300,7 @@ Status DetectJunctions(const cv::Mat& bgr, const JunctionDetectorOptions& option
   // image halved to 1/scale lies at full-image pixel scale * i (an impulse at pixel 2k comes out
   // centred on k). Only the search region is halved, from crop_top (a multiple of scale, a few
   // working rows above it for the kernel): working row j lies at image row crop_top + scale * j.
-  int scale = 1;
-  for (int w = width; options.max_work_width > 0 && w > options.max_work_width; w = (w + 1) / 2) {
-    scale *= 2;
-  }
+  const int scale = WorkingScale(width, options.max_work_width);
   const int crop_top = scale == 1 ? 0 : std::max(0, roi_top - 4 * scale) / scale * scale;
   cv::Mat work = color.rowRange(crop_top, height);
   for (int s = 1; s < scale; s *= 2) cv::pyrDown(work, work);

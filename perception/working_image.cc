@@ -4,9 +4,16 @@
 
 namespace corridor {
 
+int WorkingScale(int width, int max_width) {
+  int scale = 1;
+  for (int w = width; max_width > 0 && w > max_width; w = (w + 1) / 2) scale *= 2;
+  return scale;
+}
+
 WorkingImage HalveToWidth(const cv::Mat& bgr, const Camera& camera, int max_width) {
   WorkingImage work{bgr, camera, 1};
-  while (max_width > 0 && work.bgr.cols > max_width && work.bgr.rows > 1) {
+  const int scale = WorkingScale(bgr.cols, max_width);
+  while (work.scale < scale && work.bgr.rows > 1) {
     cv::pyrDown(work.bgr, work.bgr);
     work.scale *= 2;
     Camera& c = work.camera;
