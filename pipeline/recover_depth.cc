@@ -355,6 +355,8 @@ void DepthRecoverer::CheckBaseboards(const Camera& camera, const WorkingImage& s
   const double before = CeilingDisagreement(result->ceiling, geometry->camera_height);
   if (before >= 0 && before <= agree) return;
   const bool compared = before >= 0;
+  // A lower line must also halve `best` (the disagreement so far); without a comparison it starts
+  // at twice weak_accept, so that only the weak_accept bound applies to the first one.
   double best = compared ? before : 2 * weak_accept;
   int best_side = -1;
   CorridorGeometry best_geometry;
