@@ -9,6 +9,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "perception/appearance.h"
+#include "perception/floor_texture.h"
 #include "perception/junction_selector.h"
 #include "perception/line_segments.h"
 #include "perception/working_image.h"
@@ -17,6 +18,7 @@ namespace corridor {
 namespace {
 
 constexpr int kMinImageSide = 24;  // Smaller images cannot show a corridor.
+constexpr long kMinFloorPixels = 200;  // Fewer floor pixels (working resolution) are too few to judge its texture.
 
 // Edge pixels of the ROI (full-image coordinates) on the floor side of the vanishing point (left
 // or right of it, and below it), in the edge map's order.
@@ -251,6 +253,8 @@ bool JunctionDetectorOptions::Check(std::string* why) const {
     reason = "support_distance_px must be positive";
   } else if (!(max_edge_density > 0 && max_edge_density <= 1)) {
     reason = "max_edge_density must be in (0, 1]";
+  } else if (!(max_floor_texture >= 0 && max_floor_texture <= 1) || strong_edge_gradient < 1) {
+    reason = "max_floor_texture must be in [0, 1] (0 = no check), strong_edge_gradient >= 1";
   } else if (max_work_width != 0 && max_work_width < 2 * kMinImageSide) {
     reason = "max_work_width must be 0 (full resolution) or at least " +
              std::to_string(2 * kMinImageSide) + " px";
@@ -392,6 +396,24 @@ Status DetectJunctions(const cv::Mat& bgr, const JunctionDetectorOptions& option
   const Eigen::Vector3d vp = result->left.line.cross(result->right.line);
   result->vanishing_point =
       std::abs(vp.z()) > 1e-12 ? Eigen::Vector2d(vp.head<2>() / vp.z()) : pair.vanishing_point;
+  if (options.max_floor_texture > 0) {
+    // Three working pixels clear of the junctions' own edges (the gradient's 5 x 5 reach).
+    const GradientGrid grid{scale, crop_top + scale * work_roi_top};
+    const FloorTexture floor_texture =
+        MeasureFloorTexture(found.dx, found.dy, grid, result->left.line, result->right.line,
+                            result->vanishing_point.y(), 3.0 * scale, options.strong_edge_gradient);
+    if (floor_texture.floor_pixels >= kMinFloorPixels) {
+      result->floor_texture = floor_texture.strong_fraction;
+    }
+    if (result->floor_texture > options.max_floor_texture) {
+      std::ostringstream msg;
+      msg << "the floor between the junction lines is textured: "
+          << static_cast<int>(std::lround(100 * floor_texture.strong_fraction))
+          << "% strong edges (a corridor floor has at most "
+          << 100 * options.max_floor_texture << "%); not a corridor";
+      return NoCorridor(result, msg.str());
+    }
+  }
   result->status = Status::Ok();
   return Status::Ok();
 }

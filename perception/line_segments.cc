@@ -60,6 +60,8 @@ EdgeSegments DetectSegments(const cv::Mat& image, int roi_top, const SegmentOpti
                 : options.canny_high;
   out.canny_high = high;
   cv::Canny(dx, dy, out.edges, options.canny_low_ratio * high, high, false);
+  out.dx = dx;
+  out.dy = dy;
   std::vector<cv::Vec4i> lines;
   cv::HoughLinesP(out.edges, lines, 1.0, CV_PI / 180.0, options.hough_threshold,
                   options.hough_min_length, options.hough_max_gap);

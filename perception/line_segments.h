@@ -25,6 +25,7 @@ struct EdgeSegments {
   int roi_top = 0;                 // First image row of the ROI.
   double canny_high = 0;           // The Canny high threshold used.
   std::vector<cv::Vec4f> segments; // (u0, v0, u1, v1) in full-image coordinates.
+  cv::Mat dx, dy;                  // CV_16S colour gradient of the (blurred) ROI: Canny's input.
 };
 
 struct SegmentOptions {

@@ -26,6 +26,7 @@ DECLARE_double(max_width_change);
 DECLARE_int32(points_per_line);
 DECLARE_int32(search_max_width);
 DECLARE_double(roi_top);
+DECLARE_double(max_floor_texture);
 
 namespace corridor {
 

@@ -1,6 +1,7 @@
 // Bad images: tiny (1x1, 4x4) and absurd (20000x10) sizes; 16-bit colour, alpha and grey
-// corridors (which must work); all black, all white, noise and non-corridor scenes (which must
-// be "no corridor found" with no depth). Through RecoverDepth and through corridor_depth.
+// corridors (which must work); all black, all white, noise and non-corridor scenes (a brick wall
+// close up, an outdoor scene), which must be "no corridor found" with no depth. Through
+// RecoverDepth and through corridor_depth.
 
 #include <gtest/gtest.h>
 
@@ -10,6 +11,7 @@
 
 #include "pipeline/recover_depth.h"
 #include "tests/reliability/reliability_util.h"
+#include "tests/support/outdoor_scene.h"
 
 namespace corridor {
 namespace {
@@ -55,6 +57,7 @@ std::vector<NotACorridor> NotCorridors() {
           {"white", cv::Mat(240, 320, CV_8UC3, cv::Scalar::all(255))},
           {"noise", Noise()},
           {"wall", WallCloseUp()},
+          {"outdoor", testing_util::OutdoorScene(26)},
           {"tiny_1x1", cv::Mat(1, 1, CV_8UC3, cv::Scalar(90, 90, 90))},
           {"tiny_4x4", cv::Mat(4, 4, CV_8UC3, cv::Scalar(90, 90, 90))},
           {"wide_20000x10", cv::Mat(10, 20000, CV_8UC3, cv::Scalar(90, 90, 90))}};
