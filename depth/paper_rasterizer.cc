@@ -51,7 +51,14 @@ bool AlongSegment(const Vertex& p, const Vertex& q, int axis, double at, double*
   const double t = (at - p_at) / (q_at - p_at);
   *other = axis == 0 ? Lerp(p.v, q.v, t) : Lerp(p.u, q.u, t);
   *z = Lerp(p.z, q.z, t);
-  return true;
+  return std::isfinite(*other) && std::isfinite(*z);  // Not for vertices at infinity (or NaN).
+}
+
+// x rounded by `round` (std::ceil or std::floor) and clamped to [lo, hi], clamped before the
+// conversion to int (which is undefined for values out of int's range).
+template <typename Round>
+int RoundedIndex(double x, Round round, int lo, int hi) {
+  return static_cast<int>(std::clamp(round(x), static_cast<double>(lo), static_cast<double>(hi)));
 }
 
 // Smallest Z_W at which every polyline vertex lies at least 5 cm in front of the camera.
@@ -116,8 +123,8 @@ Status PaperRasterizer::Render(const CorridorGeometry& geometry, const Camera& c
           !AlongSegment(left[k], right[k], 0, u, &v_far, &z_far_seg) || v_near <= v_far) {
         continue;
       }
-      const int v0 = std::max(0, static_cast<int>(std::ceil(v_far)));
-      const int v1 = std::min(height - 1, static_cast<int>(std::floor(v_near)));
+      const int v0 = RoundedIndex(v_far, [](double x) { return std::ceil(x); }, 0, height);
+      const int v1 = RoundedIndex(v_near, [](double x) { return std::floor(x); }, -1, height - 1);
       for (int v = v0; v <= v1; ++v) {
         if (!floor_cone.Contains(u, v)) continue;
         const double sigma = (v_near - v) / (v_near - v_far);
@@ -138,8 +145,10 @@ Status PaperRasterizer::Render(const CorridorGeometry& geometry, const Camera& c
             std::abs(u_near - u_far) < 1e-9) {
           continue;
         }
-        const int u0 = std::max(0, static_cast<int>(std::ceil(std::min(u_near, u_far))));
-        const int u1 = std::min(width - 1, static_cast<int>(std::floor(std::max(u_near, u_far))));
+        const int u0 = RoundedIndex(std::min(u_near, u_far), [](double x) { return std::ceil(x); },
+                                    0, width);
+        const int u1 = RoundedIndex(std::max(u_near, u_far), [](double x) { return std::floor(x); },
+                                    -1, width - 1);
         for (int u = u0; u <= u1; ++u) {
           if (!cone.Contains(u, v)) continue;
           const double sigma = (u - u_near) / (u_far - u_near);

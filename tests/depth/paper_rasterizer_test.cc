@@ -62,5 +62,33 @@ TEST(PaperRasterizerTest, ApproximatesTheBoxOnFloorAndWalls) {
   }
 }
 
+// A fuzzer finding: with an absurd max_range (1e300) the farthest planes project to infinity and
+// NaN, and their rows were converted to int (undefined). Depth must stay finite, and the floor
+// near the camera must still be the box's (BoxDepth: the hand ray-box intersection).
+TEST(PaperRasterizerTest, AnAbsurdMaxRangeGivesFiniteDepthAndTheNearFloor) {
+  Camera camera = TestCamera();
+  camera.image_width = 64;
+  camera.image_height = 48;
+  camera.fx = camera.fy = 51.2;
+  camera.cx = 31.5;
+  camera.cy = 23.5;
+  RasterizerOptions options;
+  options.max_range = 1e300;
+  const PaperRasterizer rasterizer(options);
+  const CorridorGeometry g = TestGeometry(0.0098, -0.038, 0.0004, 2.78);
+  cv::Mat depth;
+  ASSERT_TRUE(rasterizer.Render(g, camera, &depth).ok());
+  for (int v = 0; v < depth.rows; ++v) {
+    for (int u = 0; u < depth.cols; ++u) {
+      const float z = depth.at<float>(v, u);
+      ASSERT_TRUE(std::isfinite(z) && z >= 0) << u << "," << v << ": " << z;
+    }
+  }
+  int surface;
+  const double floor = BoxDepth(camera, g, 32, 46, &surface);
+  ASSERT_TRUE(std::isfinite(floor));
+  EXPECT_NEAR(depth.at<float>(46, 32), floor, 0.05 * floor);
+}
+
 }  // namespace
 }  // namespace corridor
