@@ -146,7 +146,8 @@ std::vector<ImageLine> FindFocalLines(const cv::Mat& color, const FocalEstimator
   const double diagonal = std::hypot(color.cols, color.rows);
   const SegmentOptions segment_options{
       o.blur_sigma,     0.0, o.canny_low_ratio, o.canny_auto_percentile, o.canny_auto_min,
-      o.hough_threshold, std::max(6.0, o.hough_min_length_fraction * diagonal), o.hough_max_gap};
+      o.hough_threshold, std::max(6.0, o.hough_min_length_fraction * diagonal), o.hough_max_gap,
+      0.0};
   const EdgeSegments found = DetectSegments(color, 0, segment_options);
   cv::Mat smooth = color, dx16, dy16, dx, dy;
   if (o.blur_sigma > 0) cv::GaussianBlur(color, smooth, cv::Size(0, 0), o.blur_sigma);

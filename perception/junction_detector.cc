@@ -242,6 +242,8 @@ bool JunctionDetectorOptions::Check(std::string* why) const {
     reason = "hough_min_length_fraction must be in (0, 1)";
   } else if (!(hough_max_gap >= 0)) {
     reason = "hough_max_gap must be >= 0";
+  } else if (!(hough_angle_window_deg >= 0 && hough_angle_window_deg < 90)) {
+    reason = "hough_angle_window_deg must be in [0, 90) (0 = all angles, cv::HoughLinesP)";
   } else if (!(merge_angle_deg > 0 && merge_angle_deg < 45 && merge_distance_px > 0)) {
     reason = "merge tolerances must be positive (angle < 45 deg)";
   } else if (!(min_length_fraction >= 0 && max_length_fraction >= 0)) {
@@ -313,7 +315,8 @@ Status DetectJunctions(const cv::Mat& bgr, const JunctionDetectorOptions& option
       options.blur_sigma,           options.canny_high,
       options.canny_low_ratio,      options.canny_auto_percentile,
       options.canny_auto_min,       options.hough_threshold,
-      std::max(8.0, options.hough_min_length_fraction * height / scale), options.hough_max_gap};
+      std::max(8.0, options.hough_min_length_fraction * height / scale), options.hough_max_gap,
+      options.hough_angle_window_deg};
   EdgeSegments found = DetectSegments(work, work_roi_top, segment_options);
   for (cv::Vec4f& segment : found.segments) {
     for (int k = 0; k < 4; ++k) {

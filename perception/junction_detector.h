@@ -21,10 +21,11 @@ struct JunctionDetectorOptions {
   int hough_threshold = 25;          // Probabilistic Hough accumulator threshold (votes).
   double hough_min_length_fraction = 0.04;  // Shortest Hough segment, as a fraction of the image height.
   double hough_max_gap = 6;          // Largest gap bridged inside one Hough segment, px.
+  double hough_angle_window_deg = 15; // Each edge pixel votes only for lines within this of its gradient's direction (OrientedHoughSegments); 0 = cv::HoughLinesP, all angles.
   double merge_angle_deg = 2.5;      // Segments whose angles differ less than this may merge (the paper's NMS).
   double merge_distance_px = 4;      // ... and whose lines pass within this distance of each other.
   double min_length_fraction = 0.1;  // Scene prior (eq. 2): shortest junction, fraction of the height H (paper: 0.25).
-  double max_length_fraction = 0.5;  // Scene prior (eq. 2): longest junction, fraction of the diagonal (paper 1/2); 0 = no limit.
+  double max_length_fraction = 0.75;  // Scene prior (eq. 2): longest junction, fraction of the diagonal (paper 1/2); 0 = no limit.
   double min_inclination_deg = 8;    // Scene prior: flattest junction, degrees from horizontal (cross-corridor edges are flatter).
   double max_inclination_deg = 80;   // Scene prior: steepest junction, degrees from horizontal (the paper: 90 - atan(H/W), set -1).
   double support_distance_px = 2.0;  // Edge pixels this close to a chosen line support its refit.

@@ -8,6 +8,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "perception/color_gradient.h"
+#include "perception/oriented_hough.h"
 
 namespace corridor {
 namespace {
@@ -63,8 +64,17 @@ EdgeSegments DetectSegments(const cv::Mat& image, int roi_top, const SegmentOpti
   out.dx = dx;
   out.dy = dy;
   std::vector<cv::Vec4i> lines;
-  cv::HoughLinesP(out.edges, lines, 1.0, CV_PI / 180.0, options.hough_threshold,
-                  options.hough_min_length, options.hough_max_gap);
+  if (options.hough_angle_window_deg > 0) {
+    OrientedHoughOptions hough;
+    hough.threshold = options.hough_threshold;
+    hough.min_length = options.hough_min_length;
+    hough.max_gap = options.hough_max_gap;
+    hough.angle_window_deg = options.hough_angle_window_deg;
+    OrientedHoughSegments(out.edges, dx, dy, hough, &lines);
+  } else {
+    cv::HoughLinesP(out.edges, lines, 1.0, CV_PI / 180.0, options.hough_threshold,
+                    options.hough_min_length, options.hough_max_gap);
+  }
   out.segments.reserve(lines.size());
   for (const auto& l : lines) {
     out.segments.emplace_back(static_cast<float>(l[0]), static_cast<float>(l[1] + roi_top),

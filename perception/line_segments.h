@@ -37,6 +37,7 @@ struct SegmentOptions {
   int hough_threshold;       // Hough votes.
   double hough_min_length;   // Shortest segment, px.
   double hough_max_gap;      // Largest gap, px.
+  double hough_angle_window_deg;  // > 0: OrientedHoughSegments, each edge pixel voting within this of its gradient's direction; 0: cv::HoughLinesP.
 };
 
 // Canny (on colour gradients for a BGR image) + probabilistic Hough on the rows [roi_top, rows).

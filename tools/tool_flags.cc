@@ -35,6 +35,9 @@ DEFINE_int32(search_max_width, 640,
              "(0 = full resolution)");
 DEFINE_int32(points_per_line, 30, "Points sampled along each junction line for the solver");
 DEFINE_double(roi_top, 0.5, "Junction search region starts at this fraction of the image height");
+DEFINE_double(hough_angle_window, 15.0,
+              "Junction search: each edge pixel votes only for lines within this many degrees of "
+              "its gradient's direction (oriented Hough); 0 = OpenCV's HoughLinesP, all angles");
 DEFINE_double(max_floor_texture, 0.04,
               "A floor between the junctions with more strong edges than this fraction is not a "
               "corridor floor (outdoor scenes, still lifes): no corridor found. Raise it for "
@@ -56,6 +59,7 @@ Status RecoverDepthOptionsFromFlags(RecoverDepthOptions* options) {
   options->search_max_width = FLAGS_search_max_width;
   options->perception.roi_top_fraction = FLAGS_roi_top;
   options->perception.max_floor_texture = FLAGS_max_floor_texture;
+  options->perception.hough_angle_window_deg = FLAGS_hough_angle_window;
   std::unique_ptr<DepthRecoverer> probe;
   return DepthRecoverer::Create(*options, &probe);
 }

@@ -27,6 +27,7 @@ DECLARE_int32(points_per_line);
 DECLARE_int32(search_max_width);
 DECLARE_double(roi_top);
 DECLARE_double(max_floor_texture);
+DECLARE_double(hough_angle_window);
 
 namespace corridor {
 

@@ -36,7 +36,7 @@ TEST(LineSegmentsTest, HoughFindsADrawnLineInTheRoi) {
   cv::Mat gray(200, 300, CV_8U, cv::Scalar(40));
   std::vector<cv::Point> floor{{0, 199}, {0, 150}, {299, 60}, {299, 199}};
   cv::fillPoly(gray, std::vector<std::vector<cv::Point>>{floor}, cv::Scalar(200));
-  const EdgeSegments found = DetectSegments(gray, 100, {1.0, 90, 0.4, 90, 40, 20, 15, 5});
+  const EdgeSegments found = DetectSegments(gray, 100, {1.0, 90, 0.4, 90, 40, 20, 15, 5, 0.0});
   ASSERT_FALSE(found.segments.empty());
   // Every segment lies on the drawn edge v = 150 - 0.3 u, in full-image rows.
   for (const auto& s : found.segments) {

@@ -57,7 +57,7 @@ std::vector<NotACorridor> NotCorridors() {
           {"white", cv::Mat(240, 320, CV_8UC3, cv::Scalar::all(255))},
           {"noise", Noise()},
           {"wall", WallCloseUp()},
-          {"outdoor", testing_util::OutdoorScene(26)},
+          {"outdoor", testing_util::OutdoorScene(127)},
           {"tiny_1x1", cv::Mat(1, 1, CV_8UC3, cv::Scalar(90, 90, 90))},
           {"tiny_4x4", cv::Mat(4, 4, CV_8UC3, cv::Scalar(90, 90, 90))},
           {"wide_20000x10", cv::Mat(10, 20000, CV_8UC3, cv::Scalar(90, 90, 90))}};

@@ -1,0 +1,223 @@
+#include "perception/oriented_hough.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+
+#include <opencv2/core.hpp>
+
+namespace corridor {
+namespace {
+
+constexpr int kAngles = 180;  // 1 degree bins of the line normal's direction, [0, 180).
+constexpr int kShift = 16;    // Fixed-point bits of the minor coordinate when following a line.
+
+// A pixel's state while lines are drawn.
+enum PixelState : uint8_t {
+  kNone = 0,    // Not an edge, or removed with a line.
+  kWaiting = 1, // An edge pixel not drawn yet (holds no votes).
+  kVoted = 2,   // Drawn: its votes are in the accumulator.
+  kGoneVoted = 3, // Removed on the way of a line too short to keep, its votes still in (as PPHT).
+};
+
+// The (angle, rho) vote counts, reused by the calls of one thread, and left all zero by each
+// (OrientedHoughSegments takes every vote back at the end): allocating, first touching or even
+// clearing 0.6 MB (at 640x240) per call cost a third of the voting.
+class Accumulator {
+ public:
+  void Reset(int width, int height, int window) {
+    window_ = window;
+    if (offset_ != width + height) {
+      offset_ = width + height;
+      rhos_ = 2 * offset_ + 1;
+      votes_.assign(static_cast<size_t>(kAngles) * rhos_, 0);
+    }
+    if (!trig_ready_) {
+      for (int n = 0; n < kAngles; ++n) {
+        cos_[n] = static_cast<float>(std::cos(n * M_PI / kAngles));
+        sin_[n] = static_cast<float>(std::sin(n * M_PI / kAngles));
+      }
+      trig_ready_ = true;
+    }
+  }
+
+  // Adds `delta` to the bins of the lines through (u, v) whose normals lie within the window of
+  // `bin`; returns the fullest of them, and its angle in *best_angle.
+  int Vote(int u, int v, int bin, int delta, int* best_angle) {
+    int best = 0;
+    for (int k = -window_; k <= window_; ++k) {
+      int n = bin + k;
+      if (n < 0) {
+        n += kAngles;
+      } else if (n >= kAngles) {
+        n -= kAngles;
+      }
+      const int r = cvRound(u * cos_[n] + v * sin_[n]) + offset_;
+      int16_t& cell = votes_[static_cast<size_t>(n) * rhos_ + r];
+      cell = static_cast<int16_t>(cell + delta);
+      if (cell > best) {
+        best = cell;
+        *best_angle = n;
+      }
+    }
+    return best;
+  }
+
+  float Cos(int n) const { return cos_[n]; }
+  float Sin(int n) const { return sin_[n]; }
+
+ private:
+  int window_ = 0;
+  int offset_ = 0, rhos_ = 0;
+  std::vector<int16_t> votes_;  // A bin holds at most the pixels of one line: far below 2^15.
+  bool trig_ready_ = false;
+  float cos_[kAngles] = {}, sin_[kAngles] = {};
+};
+
+// Per-thread scratch of OrientedHoughSegments.
+struct HoughScratch {
+  Accumulator accumulator;
+  cv::Mat state, bins;          // PixelState and gradient bin of every pixel.
+  std::vector<cv::Point> pool;   // Edge pixels not drawn yet.
+  std::vector<cv::Point> drawn;  // Edge pixels drawn (their votes to take back at the end).
+};
+
+// The normal's direction of the line through an edge pixel, from its gradient: a bin in [0, 180).
+int GradientBin(short gx, short gy) {
+  float degrees = cv::fastAtan2(static_cast<float>(gy), static_cast<float>(gx));  // [0, 360).
+  if (degrees >= 180.f) degrees -= 180.f;
+  return cvRound(degrees) % kAngles;
+}
+
+// Steps along the line of normal angle n from (u, v), one pixel along its major axis at a time,
+// the minor coordinate in fixed point: the same pixels in both passes.
+struct LineWalker {
+  bool along_u;     // True when the line is closer to horizontal: u steps by +-1.
+  int u0, v0;       // Start, the minor coordinate shifted by kShift (plus a half).
+  int du, dv;       // Step of the first direction (the second is its negation).
+
+  LineWalker(int u, int v, float direction_u, float direction_v) {
+    along_u = std::abs(direction_u) > std::abs(direction_v);
+    if (along_u) {
+      du = direction_u > 0 ? 1 : -1;
+      dv = static_cast<int>(std::lround(direction_v * (1 << kShift) / std::abs(direction_u)));
+      u0 = u;
+      v0 = (v << kShift) + (1 << (kShift - 1));
+    } else {
+      dv = direction_v > 0 ? 1 : -1;
+      du = static_cast<int>(std::lround(direction_u * (1 << kShift) / std::abs(direction_v)));
+      u0 = (u << kShift) + (1 << (kShift - 1));
+      v0 = v;
+    }
+  }
+  int U(int x) const { return along_u ? x : x >> kShift; }
+  int V(int y) const { return along_u ? y >> kShift : y; }
+};
+
+}  // namespace
+
+void OrientedHoughSegments(const cv::Mat& edges, const cv::Mat& dx, const cv::Mat& dy,
+                           const OrientedHoughOptions& options, std::vector<cv::Vec4i>* segments) {
+  segments->clear();
+  if (edges.empty() || edges.type() != CV_8U || dx.type() != CV_16S || dy.type() != CV_16S ||
+      dx.size() != edges.size() || dy.size() != edges.size()) {
+    return;
+  }
+  const int width = edges.cols, height = edges.rows;
+  const int window = std::clamp(static_cast<int>(std::lround(options.angle_window_deg)), 0,
+                                kAngles / 2 - 1);
+  thread_local HoughScratch scratch;
+  Accumulator& accumulator = scratch.accumulator;
+  accumulator.Reset(width, height, window);
+  cv::Mat& state = scratch.state;
+  cv::Mat& bins = scratch.bins;
+  state.create(height, width, CV_8U);
+  state.setTo(cv::Scalar(kNone));
+  bins.create(height, width, CV_8U);
+  std::vector<cv::Point>& pool = scratch.pool;
+  std::vector<cv::Point>& drawn = scratch.drawn;
+  pool.clear();
+  drawn.clear();
+  for (int v = 0; v < height; ++v) {
+    const uchar* e = edges.ptr<uchar>(v);
+    const short* gx = dx.ptr<short>(v);
+    const short* gy = dy.ptr<short>(v);
+    for (int u = 0; u < width; ++u) {
+      // Edge maps are mostly empty: skip eight zero bytes at a time.
+      uint64_t eight = 0;
+      if (u + 8 <= width && (std::memcpy(&eight, e + u, 8), eight == 0)) {
+        u += 7;
+        continue;
+      }
+      if (e[u] == 0) continue;
+      state.at<uchar>(v, u) = kWaiting;
+      bins.at<uchar>(v, u) = static_cast<uchar>(GradientBin(gx[u], gy[u]));
+      pool.emplace_back(u, v);
+    }
+  }
+  cv::RNG rng(0xffffffffffffffffULL);  // Fixed: the same segments for the same image.
+  const int max_gap = static_cast<int>(options.max_gap);
+  for (int remaining = static_cast<int>(pool.size()); remaining > 0; --remaining) {
+    const int pick = rng.uniform(0, remaining);
+    const cv::Point p = pool[pick];
+    pool[pick] = pool[remaining - 1];
+    if (state.at<uchar>(p.y, p.x) != kWaiting) continue;  // Removed with a line meanwhile.
+    state.at<uchar>(p.y, p.x) = kVoted;
+    drawn.push_back(p);
+    int angle = 0;
+    if (accumulator.Vote(p.x, p.y, bins.at<uchar>(p.y, p.x), +1, &angle) < options.threshold) {
+      continue;
+    }
+    // Follow the line (direction perpendicular to the normal) both ways from p.
+    const LineWalker walk(p.x, p.y, -accumulator.Sin(angle), accumulator.Cos(angle));
+    cv::Point ends[2] = {p, p};
+    for (int k = 0; k < 2; ++k) {
+      const int du = k == 0 ? walk.du : -walk.du, dv = k == 0 ? walk.dv : -walk.dv;
+      int gap = 0;
+      for (int x = walk.u0, y = walk.v0;; x += du, y += dv) {
+        const int u = walk.U(x), v = walk.V(y);
+        if (u < 0 || u >= width || v < 0 || v >= height) break;
+        const uchar s = state.at<uchar>(v, u);
+        if (s == kWaiting || s == kVoted) {
+          gap = 0;
+          ends[k] = cv::Point(u, v);
+        } else if (++gap > max_gap) {
+          break;
+        }
+      }
+    }
+    const bool long_enough = std::abs(ends[1].x - ends[0].x) >= options.min_length ||
+                             std::abs(ends[1].y - ends[0].y) >= options.min_length;
+    // Remove the pixels on the way (their votes too, for a kept line).
+    for (int k = 0; k < 2; ++k) {
+      const int du = k == 0 ? walk.du : -walk.du, dv = k == 0 ? walk.dv : -walk.dv;
+      for (int x = walk.u0, y = walk.v0;; x += du, y += dv) {
+        const int u = walk.U(x), v = walk.V(y);
+        uchar& s = state.at<uchar>(v, u);
+        if (s == kVoted && long_enough) {
+          int unused = 0;
+          accumulator.Vote(u, v, bins.at<uchar>(v, u), -1, &unused);
+          s = kNone;
+        } else if (s == kVoted) {
+          s = kGoneVoted;
+        } else if (s == kWaiting) {
+          s = kNone;
+        }
+        if (u == ends[k].x && v == ends[k].y) break;
+      }
+    }
+    if (long_enough) segments->emplace_back(ends[0].x, ends[0].y, ends[1].x, ends[1].y);
+  }
+  // Take back the votes still in, so that the next call starts from zero.
+  for (const cv::Point& p : drawn) {
+    const uchar s = state.at<uchar>(p.y, p.x);
+    if (s == kVoted || s == kGoneVoted) {
+      int unused = 0;
+      accumulator.Vote(p.x, p.y, bins.at<uchar>(p.y, p.x), -1, &unused);
+    }
+  }
+}
+
+}  // namespace corridor
