@@ -126,8 +126,10 @@ void OrientedHoughSegments(const cv::Mat& edges, const cv::Mat& dx, const cv::Ma
     return;
   }
   const int width = edges.cols, height = edges.rows;
-  const int window = std::clamp(static_cast<int>(std::lround(options.angle_window_deg)), 0,
-                                kAngles / 2 - 1);
+  // Options clamped in double before any conversion to int (undefined out of int's range; NaN
+  // counts as 0).
+  const double window_deg = options.angle_window_deg > 0 ? options.angle_window_deg : 0.0;
+  const int window = static_cast<int>(std::lround(std::min(window_deg, kAngles / 2 - 1.0)));
   thread_local HoughScratch scratch;
   Accumulator& accumulator = scratch.accumulator;
   accumulator.Reset(width, height, window);
@@ -158,7 +160,9 @@ void OrientedHoughSegments(const cv::Mat& edges, const cv::Mat& dx, const cv::Ma
     }
   }
   cv::RNG rng(0xffffffffffffffffULL);  // Fixed: the same segments for the same image.
-  const int max_gap = static_cast<int>(options.max_gap);
+  const int max_gap =
+      options.max_gap > 0 ? static_cast<int>(std::min(options.max_gap, 1.0 * (width + height)))
+                          : 0;
   for (int remaining = static_cast<int>(pool.size()); remaining > 0; --remaining) {
     const int pick = rng.uniform(0, remaining);
     const cv::Point p = pool[pick];

@@ -154,5 +154,31 @@ TEST(OrientedHoughTest, InputsThatDoNotMatchGiveNoSegments) {
   EXPECT_TRUE(segments.empty());
 }
 
+// A fuzzer finding: a gap of 1e300 px was converted to int (undefined). Absurd options are
+// clamped: any gap at least the image's size bridges everything (as an image-sized one does),
+// NaN counts as none, and windows beyond 89 degrees mean all angles.
+TEST(OrientedHoughTest, AbsurdOptionsAreClampedNotConverted) {
+  const EdgeInput in = EdgesOf(QuadImage());
+  OrientedHoughOptions image_sized, huge, nan_gap, no_gap;
+  image_sized.max_gap = 320 + 240;
+  huge.max_gap = 1e300;
+  nan_gap.max_gap = std::nan("");
+  no_gap.max_gap = 0;
+  std::vector<cv::Vec4i> expected, got;
+  OrientedHoughSegments(in.edges, in.dx, in.dy, image_sized, &expected);
+  OrientedHoughSegments(in.edges, in.dx, in.dy, huge, &got);
+  EXPECT_EQ(got, expected);
+  OrientedHoughSegments(in.edges, in.dx, in.dy, no_gap, &expected);
+  OrientedHoughSegments(in.edges, in.dx, in.dy, nan_gap, &got);
+  EXPECT_EQ(got, expected);
+  OrientedHoughOptions wide, widest;
+  wide.angle_window_deg = 1e300;
+  widest.angle_window_deg = 89;
+  OrientedHoughSegments(in.edges, in.dx, in.dy, widest, &expected);
+  OrientedHoughSegments(in.edges, in.dx, in.dy, wide, &got);
+  EXPECT_EQ(got, expected);
+  EXPECT_FALSE(got.empty());
+}
+
 }  // namespace
 }  // namespace corridor
