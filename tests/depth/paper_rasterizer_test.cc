@@ -11,15 +11,21 @@ using testing::BoxDepth;
 using testing::TestCamera;
 using testing::TestGeometry;
 
+// The test camera at width x height, focal length f, principal point at the centre.
+Camera CentredCamera(int width, int height, double f) {
+  Camera camera = TestCamera();
+  camera.image_width = width;
+  camera.image_height = height;
+  camera.fx = camera.fy = f;
+  camera.cx = 0.5 * (width - 1);
+  camera.cy = 0.5 * (height - 1);
+  return camera;
+}
+
 // The paper's planes interpolate linearly between cross-sections, so they approximate the box:
 // compare with the hand depth on floor and walls below the maximum height.
 TEST(PaperRasterizerTest, ApproximatesTheBoxOnFloorAndWalls) {
-  Camera camera = TestCamera();
-  camera.image_width = 320;
-  camera.image_height = 240;
-  camera.fx = camera.fy = 200;
-  camera.cx = 159.5;
-  camera.cy = 119.5;
+  const Camera camera = CentredCamera(320, 240, 200);
   RasterizerOptions options;
   options.max_range = 30.0;
   options.max_height = 1.8;
@@ -66,12 +72,7 @@ TEST(PaperRasterizerTest, ApproximatesTheBoxOnFloorAndWalls) {
 // NaN, and their rows were converted to int (undefined). Depth must stay finite, and the floor
 // near the camera must still be the box's (BoxDepth: the hand ray-box intersection).
 TEST(PaperRasterizerTest, AnAbsurdMaxRangeGivesFiniteDepthAndTheNearFloor) {
-  Camera camera = TestCamera();
-  camera.image_width = 64;
-  camera.image_height = 48;
-  camera.fx = camera.fy = 51.2;
-  camera.cx = 31.5;
-  camera.cy = 23.5;
+  const Camera camera = CentredCamera(64, 48, 51.2);
   RasterizerOptions options;
   options.max_range = 1e300;
   const PaperRasterizer rasterizer(options);
