@@ -7,7 +7,6 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "perception/color_gradient.h"
 #include "perception/line_segments.h"
 
 namespace corridor {
@@ -149,11 +148,10 @@ std::vector<ImageLine> FindFocalLines(const cv::Mat& color, const FocalEstimator
       o.hough_threshold, std::max(6.0, o.hough_min_length_fraction * diagonal), o.hough_max_gap,
       0.0};
   const EdgeSegments found = DetectSegments(color, 0, segment_options);
-  cv::Mat smooth = color, dx16, dy16, dx, dy;
-  if (o.blur_sigma > 0) cv::GaussianBlur(color, smooth, cv::Size(0, 0), o.blur_sigma);
-  ColorGradient(smooth, &dx16, &dy16, nullptr);
-  dx16.convertTo(dx, CV_32F);
-  dy16.convertTo(dy, CV_32F);
+  // The gradients Canny ran on (the whole image, blurred): the sub-pixel refit's too.
+  cv::Mat dx, dy;
+  found.dx.convertTo(dx, CV_32F);
+  found.dy.convertTo(dy, CV_32F);
   std::vector<ImageLine> lines;
   for (const MergedLine& m : MergeSegments(found.segments, o.merge_angle_deg, o.merge_distance_px)) {
     if (m.length < o.min_line_length_fraction * diagonal) continue;
