@@ -24,17 +24,33 @@ void KeepBelow(const Eigen::Vector3d& line, double v, double margin, int scale, 
   }
 }
 
+// True when the edge through (u, v) with gradient (gx, gy) runs within the tolerance of
+// horizontal, of vertical, or of the direction to the vanishing point.
+bool AlongCorridorLine(double gx, double gy, double u, double v, const Eigen::Vector2d& vp,
+                       double tan_tolerance, double sin_tolerance) {
+  const double ax = std::abs(gx), ay = std::abs(gy);
+  if (ax <= tan_tolerance * ay || ay <= tan_tolerance * ax) return true;
+  // The edge runs along (-gy, gx); the vanishing point lies along (tx, ty).
+  const double tx = vp.x() - u, ty = vp.y() - v;
+  const double cross = -gy * ty - gx * tx;
+  return std::abs(cross) <= sin_tolerance * std::hypot(gx, gy) * std::hypot(tx, ty);
+}
+
 }  // namespace
 
 FloorTexture MeasureFloorTexture(const cv::Mat& dx, const cv::Mat& dy, const GradientGrid& grid,
                                  const Eigen::Vector3d& left, const Eigen::Vector3d& right,
-                                 double vanishing_row, double margin, int strong) {
+                                 const Eigen::Vector2d& vanishing_point,
+                                 const FloorTextureOptions& options) {
   FloorTexture out;
-  long strong_pixels = 0;
+  long strong_pixels = 0, odd_pixels = 0;
   if (dx.type() != CV_16S || dy.type() != CV_16S || dx.size() != dy.size()) return out;
+  const double tolerance = options.line_tolerance_deg * M_PI / 180.0;
+  const double tan_tolerance = std::tan(tolerance), sin_tolerance = std::sin(tolerance);
+  const double margin = options.margin;
   for (int j = 0; j < dx.rows; ++j) {
     const double v = grid.first_row + static_cast<double>(grid.scale) * j;
-    if (!(v > vanishing_row + margin)) continue;
+    if (!(v > vanishing_point.y() + margin)) continue;
     double lo = 0, hi = dx.cols;
     KeepBelow(left, v, margin, grid.scale, &lo, &hi);
     KeepBelow(right, v, margin, grid.scale, &lo, &hi);
@@ -42,15 +58,20 @@ FloorTexture MeasureFloorTexture(const cv::Mat& dx, const cv::Mat& dy, const Gra
     const int begin = static_cast<int>(lo), end = static_cast<int>(hi);
     const short* gx = dx.ptr<short>(j);
     const short* gy = dy.ptr<short>(j);
-    int row_strong = 0;
     for (int i = begin; i < end; ++i) {
-      row_strong += std::abs(gx[i]) + std::abs(gy[i]) >= strong ? 1 : 0;
+      if (std::abs(gx[i]) + std::abs(gy[i]) < options.strong) continue;
+      ++strong_pixels;
+      const double u = static_cast<double>(grid.scale) * i;
+      odd_pixels += AlongCorridorLine(gx[i], gy[i], u, v, vanishing_point, tan_tolerance,
+                                      sin_tolerance)
+                        ? 0
+                        : 1;
     }
-    strong_pixels += row_strong;
     out.floor_pixels += end - begin;
   }
   if (out.floor_pixels > 0) {
     out.strong_fraction = static_cast<double>(strong_pixels) / out.floor_pixels;
+    out.odd_fraction = static_cast<double>(odd_pixels) / out.floor_pixels;
   }
   return out;
 }

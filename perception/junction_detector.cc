@@ -255,8 +255,10 @@ bool JunctionDetectorOptions::Check(std::string* why) const {
     reason = "support_distance_px must be positive";
   } else if (!(max_edge_density > 0 && max_edge_density <= 1)) {
     reason = "max_edge_density must be in (0, 1]";
-  } else if (!(max_floor_texture >= 0 && max_floor_texture <= 1) || strong_edge_gradient < 1) {
-    reason = "max_floor_texture must be in [0, 1] (0 = no check), strong_edge_gradient >= 1";
+  } else if (!(max_floor_texture >= 0 && max_floor_texture <= 1) || strong_edge_gradient < 1 ||
+             !(floor_line_tolerance_deg >= 0 && floor_line_tolerance_deg < 45)) {
+    reason = "max_floor_texture must be in [0, 1] (0 = no check), strong_edge_gradient >= 1, "
+             "floor_line_tolerance_deg in [0, 45)";
   } else if (max_work_width != 0 && max_work_width < 2 * kMinImageSide) {
     reason = "max_work_width must be 0 (full resolution) or at least " +
              std::to_string(2 * kMinImageSide) + " px";
@@ -400,19 +402,23 @@ Status DetectJunctions(const cv::Mat& bgr, const JunctionDetectorOptions& option
   result->vanishing_point =
       std::abs(vp.z()) > 1e-12 ? Eigen::Vector2d(vp.head<2>() / vp.z()) : pair.vanishing_point;
   if (options.max_floor_texture > 0) {
-    // Three working pixels clear of the junctions' own edges (the gradient's 5 x 5 reach).
     const GradientGrid grid{scale, crop_top + scale * work_roi_top};
+    FloorTextureOptions texture_options;
+    texture_options.margin = 3.0 * scale;  // Clear of the junctions' own edges (the 5x5 reach).
+    texture_options.strong = options.strong_edge_gradient;
+    texture_options.line_tolerance_deg = options.floor_line_tolerance_deg;
     const FloorTexture floor_texture =
         MeasureFloorTexture(found.dx, found.dy, grid, result->left.line, result->right.line,
-                            result->vanishing_point.y(), 3.0 * scale, options.strong_edge_gradient);
+                            result->vanishing_point, texture_options);
     if (floor_texture.floor_pixels >= kMinFloorPixels) {
-      result->floor_texture = floor_texture.strong_fraction;
+      result->floor_texture = floor_texture.odd_fraction;
     }
     if (result->floor_texture > options.max_floor_texture) {
       std::ostringstream msg;
+      msg.precision(2);
       msg << "the floor between the junction lines is textured: "
-          << static_cast<int>(std::lround(100 * floor_texture.strong_fraction))
-          << "% strong edges (a corridor floor has at most "
+          << 100 * floor_texture.odd_fraction
+          << "% of it are strong edges along no corridor line (a corridor floor has at most "
           << 100 * options.max_floor_texture << "%); not a corridor";
       return NoCorridor(result, msg.str());
     }

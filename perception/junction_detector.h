@@ -30,8 +30,9 @@ struct JunctionDetectorOptions {
   double max_inclination_deg = 80;   // Scene prior: steepest junction, degrees from horizontal (the paper: 90 - atan(H/W), set -1).
   double support_distance_px = 2.0;  // Edge pixels this close to a chosen line support its refit.
   double max_edge_density = 0.2;     // More edge pixels than this fraction of the ROI: noise or texture, not a corridor.
-  double max_floor_texture = 0.04;   // More of the floor between the chosen junctions in strong edges than this fraction: not a corridor (an outdoor scene, a still life); 0 = no check.
+  double max_floor_texture = 0.015;  // More of the floor between the chosen junctions in strong edges along no corridor line than this fraction: not a corridor (an outdoor scene, a still life); 0 = no check.
   int strong_edge_gradient = 240;    // A strong edge: colour |dx| + |dy| (Sobel 3x3) at least this, a step of about 60 grey levels.
+  double floor_line_tolerance_deg = 15;  // Floor edges within this of horizontal, vertical or the vanishing point are corridor lines (joints, tape, reflections).
   int max_work_width = 640;          // Wider images are halved (pyrDown) until they fit before edges and lines are found; 0 = full resolution.
 
   bool Check(std::string* why) const;

@@ -25,7 +25,7 @@ struct JunctionPair {
   JunctionLine left;              // The left floor/wall junction (valid when status.ok()).
   JunctionLine right;             // The right floor/wall junction.
   Eigen::Vector2d vanishing_point = Eigen::Vector2d::Zero();  // Intersection of the two lines.
-  double floor_texture = -1;      // Strong-edge fraction of the floor between the lines (JunctionDetectorOptions::max_floor_texture); -1 = not measured.
+  double floor_texture = -1;      // Fraction of the floor between the lines in strong edges along no corridor line (JunctionDetectorOptions::max_floor_texture); -1 = not measured.
   std::vector<cv::Vec4f> segments;  // All Hough segments in the ROI (for drawing and debugging).
 
   // Per side, a parallel line just below the chosen junction that looks less like the floor's

@@ -38,10 +38,11 @@ DEFINE_double(roi_top, 0.5, "Junction search region starts at this fraction of t
 DEFINE_double(hough_angle_window, 15.0,
               "Junction search: each edge pixel votes only for lines within this many degrees of "
               "its gradient's direction (oriented Hough); 0 = OpenCV's HoughLinesP, all angles");
-DEFINE_double(max_floor_texture, 0.04,
-              "A floor between the junctions with more strong edges than this fraction is not a "
+DEFINE_double(max_floor_texture, 0.015,
+              "A floor between the junctions with more strong edges along no corridor line "
+              "(horizontal, vertical, toward the vanishing point) than this fraction is not a "
               "corridor floor (outdoor scenes, still lifes): no corridor found. Raise it for "
-              "high-contrast floors (checkered tiles); 0 = no check");
+              "patterned floors; 0 = no check");
 
 namespace corridor {
 
