@@ -19,9 +19,8 @@ struct OrientedHoughOptions {
 // to max_gap, and its pixels are removed), except that each edge pixel votes only for the line
 // normals within angle_window_deg of its own gradient direction instead of for all 180: about a
 // tenth of the votes, and pixels of other lines and of texture no longer pile onto a line's bin.
-// Two differences from OpenCV's loop: a pixel that was never drawn is not un-voted when the line
-// through it is removed (OpenCV un-votes it, which can leave negative bins), and the accumulator
-// only holds the votes of drawn, unremoved pixels.
+// One more difference from OpenCV's loop: a pixel that was never drawn is not un-voted when the
+// line through it is removed (OpenCV un-votes it, which can leave negative bins).
 // `edges`: CV_8U edge map (non-zero = edge); `dx`, `dy`: CV_16S gradients of the same size (the
 // Canny input). Segments are (u0, v0, u1, v1) in the edge map's pixels.
 void OrientedHoughSegments(const cv::Mat& edges, const cv::Mat& dx, const cv::Mat& dy,
