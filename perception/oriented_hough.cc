@@ -27,6 +27,15 @@ enum PixelState : uint8_t {
 // clearing 0.6 MB (at 640x240) per call cost a third of the voting.
 class Accumulator {
  public:
+  Accumulator() {
+    for (int n = 0; n < kAngles; ++n) {
+      cos_[n] = static_cast<float>(std::cos(n * M_PI / kAngles));
+      sin_[n] = static_cast<float>(std::sin(n * M_PI / kAngles));
+    }
+  }
+
+  // Sizes the accumulator for a width x height map (cleared only when that changes: every call
+  // leaves it empty) and sets the voting window, bins on each side.
   void Reset(int width, int height, int window) {
     window_ = window;
     if (offset_ != width + height) {
@@ -34,29 +43,16 @@ class Accumulator {
       rhos_ = 2 * offset_ + 1;
       votes_.assign(static_cast<size_t>(kAngles) * rhos_, 0);
     }
-    if (!trig_ready_) {
-      for (int n = 0; n < kAngles; ++n) {
-        cos_[n] = static_cast<float>(std::cos(n * M_PI / kAngles));
-        sin_[n] = static_cast<float>(std::sin(n * M_PI / kAngles));
-      }
-      trig_ready_ = true;
-    }
   }
 
-  // Adds `delta` to the bins of the lines through (u, v) whose normals lie within the window of
+  // Adds a vote to the bins of the lines through (u, v) whose normals lie within the window of
   // `bin`; returns the fullest of them, and its angle in *best_angle.
-  int Vote(int u, int v, int bin, int delta, int* best_angle) {
+  int Vote(int u, int v, int bin, int* best_angle) {
     int best = 0;
     for (int k = -window_; k <= window_; ++k) {
-      int n = bin + k;
-      if (n < 0) {
-        n += kAngles;
-      } else if (n >= kAngles) {
-        n -= kAngles;
-      }
-      const int r = cvRound(u * cos_[n] + v * sin_[n]) + offset_;
-      int16_t& cell = votes_[static_cast<size_t>(n) * rhos_ + r];
-      cell = static_cast<int16_t>(cell + delta);
+      const int n = Wrap(bin + k);
+      int16_t& cell = Cell(u, v, n);
+      ++cell;
       if (cell > best) {
         best = cell;
         *best_angle = n;
@@ -65,15 +61,25 @@ class Accumulator {
     return best;
   }
 
+  // Takes back the votes Vote(u, v, bin) added.
+  void Unvote(int u, int v, int bin) {
+    for (int k = -window_; k <= window_; ++k) --Cell(u, v, Wrap(bin + k));
+  }
+
   float Cos(int n) const { return cos_[n]; }
   float Sin(int n) const { return sin_[n]; }
 
  private:
+  static int Wrap(int n) { return n < 0 ? n + kAngles : (n >= kAngles ? n - kAngles : n); }
+  int16_t& Cell(int u, int v, int n) {
+    const int r = cvRound(u * cos_[n] + v * sin_[n]) + offset_;
+    return votes_[static_cast<size_t>(n) * rhos_ + r];
+  }
+
   int window_ = 0;
   int offset_ = 0, rhos_ = 0;
   std::vector<int16_t> votes_;  // A bin holds at most the pixels of one line: far below 2^15.
-  bool trig_ready_ = false;
-  float cos_[kAngles] = {}, sin_[kAngles] = {};
+  float cos_[kAngles], sin_[kAngles];
 };
 
 // Per-thread scratch of OrientedHoughSegments.
@@ -171,7 +177,7 @@ void OrientedHoughSegments(const cv::Mat& edges, const cv::Mat& dx, const cv::Ma
     state.at<uchar>(p.y, p.x) = kVoted;
     drawn.push_back(p);
     int angle = 0;
-    if (accumulator.Vote(p.x, p.y, bins.at<uchar>(p.y, p.x), +1, &angle) < options.threshold) {
+    if (accumulator.Vote(p.x, p.y, bins.at<uchar>(p.y, p.x), &angle) < options.threshold) {
       continue;
     }
     // Follow the line (direction perpendicular to the normal) both ways from p.
@@ -201,8 +207,7 @@ void OrientedHoughSegments(const cv::Mat& edges, const cv::Mat& dx, const cv::Ma
         const int u = walk.U(x), v = walk.V(y);
         uchar& s = state.at<uchar>(v, u);
         if (s == kVoted && long_enough) {
-          int unused = 0;
-          accumulator.Vote(u, v, bins.at<uchar>(v, u), -1, &unused);
+          accumulator.Unvote(u, v, bins.at<uchar>(v, u));
           s = kNone;
         } else if (s == kVoted) {
           s = kGoneVoted;
@@ -217,10 +222,7 @@ void OrientedHoughSegments(const cv::Mat& edges, const cv::Mat& dx, const cv::Ma
   // Take back the votes still in, so that the next call starts from zero.
   for (const cv::Point& p : drawn) {
     const uchar s = state.at<uchar>(p.y, p.x);
-    if (s == kVoted || s == kGoneVoted) {
-      int unused = 0;
-      accumulator.Vote(p.x, p.y, bins.at<uchar>(p.y, p.x), -1, &unused);
-    }
+    if (s == kVoted || s == kGoneVoted) accumulator.Unvote(p.x, p.y, bins.at<uchar>(p.y, p.x));
   }
 }
 
