@@ -41,10 +41,7 @@ void Segments(benchmark::State& state, int width, int height) {
   cv::setNumThreads(1);
   const bench::BenchFrame& input = bench::PaperLikeFrame(width, height);
   const JunctionDetectorOptions o;
-  const SegmentOptions options{o.blur_sigma,     o.canny_high,        o.canny_low_ratio,
-                               o.canny_auto_percentile, o.canny_auto_min, o.hough_threshold,
-                               std::max(8.0, o.hough_min_length_fraction * height),
-                               o.hough_max_gap,         o.hough_angle_window_deg};
+  const SegmentOptions options = JunctionSegmentOptions(o, height, 1);
   for (auto _ : state) {
     const EdgeSegments found = DetectSegments(input.frame.bgr, height / 2, options);
     benchmark::DoNotOptimize(found.segments.data());
@@ -55,10 +52,7 @@ void Appearance(benchmark::State& state, int width, int height) {
   cv::setNumThreads(1);
   const bench::BenchFrame& input = bench::PaperLikeFrame(width, height);
   const JunctionDetectorOptions o;
-  const SegmentOptions options{o.blur_sigma,     o.canny_high,        o.canny_low_ratio,
-                               o.canny_auto_percentile, o.canny_auto_min, o.hough_threshold,
-                               std::max(8.0, o.hough_min_length_fraction * height),
-                               o.hough_max_gap,         o.hough_angle_window_deg};
+  const SegmentOptions options = JunctionSegmentOptions(o, height, 1);
   const int roi_top = height / 2;
   const std::vector<MergedLine> lines = MergeSegments(
       DetectSegments(input.frame.bgr, roi_top, options).segments, o.merge_angle_deg,

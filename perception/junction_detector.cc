@@ -268,6 +268,19 @@ bool JunctionDetectorOptions::Check(std::string* why) const {
   return false;
 }
 
+SegmentOptions JunctionSegmentOptions(const JunctionDetectorOptions& options, int height,
+                                      int scale) {
+  return {options.blur_sigma,
+          options.canny_high,
+          options.canny_low_ratio,
+          options.canny_auto_percentile,
+          options.canny_auto_min,
+          options.hough_threshold,
+          std::max(8.0, options.hough_min_length_fraction * height / scale),
+          options.hough_max_gap,
+          options.hough_angle_window_deg};
+}
+
 std::vector<Eigen::Vector2d> SampleAlongLine(const JunctionLine& line, int n) {
   std::vector<Eigen::Vector2d> points;
   if (n <= 0) return points;
@@ -313,13 +326,8 @@ Status DetectJunctions(const cv::Mat& bgr, const JunctionDetectorOptions& option
   cv::Mat work = color.rowRange(crop_top, height);
   for (int s = 1; s < scale; s *= 2) cv::pyrDown(work, work);
   const int work_roi_top = roi_top / scale - crop_top / scale;
-  const SegmentOptions segment_options{
-      options.blur_sigma,           options.canny_high,
-      options.canny_low_ratio,      options.canny_auto_percentile,
-      options.canny_auto_min,       options.hough_threshold,
-      std::max(8.0, options.hough_min_length_fraction * height / scale), options.hough_max_gap,
-      options.hough_angle_window_deg};
-  EdgeSegments found = DetectSegments(work, work_roi_top, segment_options);
+  EdgeSegments found =
+      DetectSegments(work, work_roi_top, JunctionSegmentOptions(options, height, scale));
   for (cv::Vec4f& segment : found.segments) {
     for (int k = 0; k < 4; ++k) {
       segment[k] = static_cast<float>(scale * segment[k] + (k % 2 == 1 ? crop_top : 0));

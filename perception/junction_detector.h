@@ -6,6 +6,7 @@
 
 #include "core/status.h"
 #include "perception/junction_lines.h"
+#include "perception/line_segments.h"
 
 namespace corridor {
 
@@ -37,6 +38,11 @@ struct JunctionDetectorOptions {
 
   bool Check(std::string* why) const;
 };
+
+// The edge and Hough options of the junction search for an image `height` rows tall searched at
+// 1/scale of its resolution (the shortest segment scales with the working height).
+SegmentOptions JunctionSegmentOptions(const JunctionDetectorOptions& options, int height,
+                                      int scale);
 
 // Finds the left and right floor/wall junctions. InvalidArgument for an empty or non-8-bit
 // image; otherwise OK, with result->status = kNoCorridorFound and a reason when no plausible
