@@ -291,8 +291,10 @@ std::vector<Eigen::Vector2d> SampleAlongLine(const JunctionLine& line, int n) {
   return points;
 }
 
-Status DetectJunctions(const cv::Mat& bgr, const JunctionDetectorOptions& options,
-                       JunctionPair* result) {
+namespace {
+
+Status DetectJunctionsIn(const cv::Mat& bgr, const cv::Mat* halved,
+                         const JunctionDetectorOptions& options, JunctionPair* result) {
   *result = JunctionPair();
   if (bgr.empty()) return Status::InvalidArgument("image is empty");
   if (bgr.depth() != CV_8U) return Status::InvalidArgument("image must be 8-bit");
@@ -321,10 +323,22 @@ Status DetectJunctions(const cv::Mat& bgr, const JunctionDetectorOptions& option
   // image halved to 1/scale lies at full-image pixel scale * i (an impulse at pixel 2k comes out
   // centred on k). Only the search region is halved, from crop_top (a multiple of scale, a few
   // working rows above it for the kernel): working row j lies at image row crop_top + scale * j.
+  // A caller's halved image is the whole image: crop_top 0, and the same search region rows.
   const int scale = WorkingScale(width, options.max_work_width);
-  const int crop_top = scale == 1 ? 0 : std::max(0, roi_top - 4 * scale) / scale * scale;
+  int crop_top = scale == 1 ? 0 : std::max(0, roi_top - 4 * scale) / scale * scale;
   cv::Mat work = color.rowRange(crop_top, height);
-  for (int s = 1; s < scale; s *= 2) cv::pyrDown(work, work);
+  if (halved != nullptr && scale > 1) {
+    cv::Size size(width, height);
+    for (int s = 1; s < scale; s *= 2) size = cv::Size((size.width + 1) / 2, (size.height + 1) / 2);
+    if (halved->size() != size || halved->type() != CV_8UC3) {
+      return Status::InvalidArgument("junction detector: the halved image is not the image's "
+                                     "pyrDown to max_work_width");
+    }
+    crop_top = 0;
+    work = *halved;
+  } else {
+    for (int s = 1; s < scale; s *= 2) cv::pyrDown(work, work);
+  }
   const int work_roi_top = roi_top / scale - crop_top / scale;
   EdgeSegments found =
       DetectSegments(work, work_roi_top, JunctionSegmentOptions(options, height, scale));
@@ -433,6 +447,18 @@ Status DetectJunctions(const cv::Mat& bgr, const JunctionDetectorOptions& option
   }
   result->status = Status::Ok();
   return Status::Ok();
+}
+
+}  // namespace
+
+Status DetectJunctions(const cv::Mat& bgr, const JunctionDetectorOptions& options,
+                       JunctionPair* result) {
+  return DetectJunctionsIn(bgr, nullptr, options, result);
+}
+
+Status DetectJunctions(const cv::Mat& bgr, const cv::Mat& halved,
+                       const JunctionDetectorOptions& options, JunctionPair* result) {
+  return DetectJunctionsIn(bgr, &halved, options, result);
 }
 
 }  // namespace corridor

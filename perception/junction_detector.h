@@ -50,4 +50,11 @@ SegmentOptions JunctionSegmentOptions(const JunctionDetectorOptions& options, in
 Status DetectJunctions(const cv::Mat& bgr, const JunctionDetectorOptions& options,
                        JunctionPair* result);
 
+// The same, given `halved`: the whole of `bgr` (8-bit, 3 channels) halved by cv::pyrDown as many
+// times as options.max_work_width asks, by a caller that needs that image too (the ceiling and
+// end-wall searches). The result is the other overload's: it halves only the search region, whose
+// rows come out the same. InvalidArgument when `halved` is not that image's size or type.
+Status DetectJunctions(const cv::Mat& bgr, const cv::Mat& halved,
+                       const JunctionDetectorOptions& options, JunctionPair* result);
+
 }  // namespace corridor

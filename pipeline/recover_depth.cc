@@ -257,7 +257,15 @@ Status DepthRecoverer::Detect(const cv::Mat& image, const Camera& camera,
   Status status = ToBgr(image, camera, &bgr);
   if (!status.ok()) return finish(status);
   result->image = bgr;
-  status = DetectJunctions(bgr, options_.perception, &result->junctions);
+  // When the junction search and the ceiling/end-wall searches halve large images to the same
+  // width, one halving of the whole image serves both.
+  if (options_.search_max_width == options_.perception.max_work_width &&
+      WorkingScale(bgr.cols, options_.search_max_width) > 1) {
+    result->search = HalveToWidth(bgr, camera, options_.search_max_width);
+    status = DetectJunctions(bgr, result->search.bgr, options_.perception, &result->junctions);
+  } else {
+    status = DetectJunctions(bgr, options_.perception, &result->junctions);
+  }
   if (!status.ok()) return finish(status);
   return finish(result->junctions.status);
 }
@@ -314,7 +322,9 @@ Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* res
   const bool search_end_wall = options_.estimate_end_wall && !result->image.empty();
   WorkingImage search;
   if (search_ceiling || search_end_wall) {
-    search = HalveToWidth(result->image, camera, options_.search_max_width);
+    search = result->search.bgr.empty()
+                 ? HalveToWidth(result->image, camera, options_.search_max_width)
+                 : result->search;
   }
   if (search_ceiling) {
     status = DetectCeiling(search.bgr, search.camera, geometry, options_.ceiling, &result->ceiling);

@@ -5,6 +5,7 @@
 
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
+#include <opencv2/imgproc.hpp>
 
 #include "perception/junction_detector.h"
 #include "synth/corridor_renderer.h"
@@ -103,6 +104,46 @@ TEST(SyntheticCorridorTest, WorkingResolutionKeepsTheLinesOfLargeImages) {
               total);
   EXPECT_GE(close[1], close[0] - 1);
   EXPECT_GE(close[1], total * 3 / 4);
+}
+
+// A caller's halving of the whole image (shared with the ceiling and end-wall searches) gives
+// exactly the lines of the detector's own halving of the search region: the region's rows do not
+// see the crop's border. Sizes 1280x720 (halved once) and 2560x1440 (twice).
+TEST(SyntheticCorridorTest, ACallersHalvedImageGivesTheSameLines) {
+  for (const int width : {1280, 2560}) {
+    const Camera camera = Camera::FromHorizontalFov(width, width * 9 / 16, 85.0 * M_PI / 180, 0.7);
+    synth::SceneOptions scene;
+    scene.clutter = 0.1;
+    synth::Frame frame;
+    ASSERT_TRUE(synth::RenderFrame(synth::BuildScene(scene), camera,
+                                   synth::CameraPose{0.05, 0.03, 0.2, 0.7, 3.0}, &frame)
+                    .ok());
+    cv::Mat halved = frame.bgr;
+    for (int w = width; w > 640; w = (w + 1) / 2) cv::pyrDown(halved, halved);
+    JunctionPair own, shared;
+    ASSERT_TRUE(DetectJunctions(frame.bgr, JunctionDetectorOptions(), &own).ok());
+    ASSERT_TRUE(DetectJunctions(frame.bgr, halved, JunctionDetectorOptions(), &shared).ok());
+    ASSERT_TRUE(own.status.ok()) << own.status.ToString();
+    ASSERT_TRUE(shared.status.ok()) << shared.status.ToString();
+    EXPECT_EQ(own.segments.size(), shared.segments.size()) << width;
+    EXPECT_EQ(own.left.line, shared.left.line) << width;
+    EXPECT_EQ(own.right.line, shared.right.line) << width;
+    EXPECT_EQ(own.vanishing_point, shared.vanishing_point) << width;
+  }
+}
+
+TEST(SyntheticCorridorTest, AHalvedImageOfTheWrongSizeIsRejected) {
+  const Camera camera = Camera::FromHorizontalFov(1280, 720, 85.0 * M_PI / 180, 0.7);
+  synth::Frame frame;
+  ASSERT_TRUE(synth::RenderFrame(synth::BuildScene(synth::SceneOptions()), camera,
+                                 synth::CameraPose{0.05, 0.0, 0.2, 0.7, 3.0}, &frame)
+                  .ok());
+  cv::Mat wrong;
+  cv::resize(frame.bgr, wrong, cv::Size(600, 360));
+  JunctionPair pair;
+  const Status status = DetectJunctions(frame.bgr, wrong, JunctionDetectorOptions(), &pair);
+  EXPECT_EQ(status.code(), StatusCode::kInvalidArgument);
+  EXPECT_NE(status.message().find("halved image"), std::string::npos) << status.ToString();
 }
 
 TEST(SyntheticCorridorTest, WorkingWidthBelowTwiceTheSmallestImageIsRejected) {
