@@ -26,6 +26,7 @@ struct RasterizerOptions {
   double max_height = 2.5;   // Without a ceiling estimate, wall points higher than this above the floor get 0, m.
   bool use_ceiling = true;   // Render the ceiling plane when the geometry has a ceiling height.
   int paper_planes = 96;     // "paper": number of depth planes between the nearest visible floor and max_range.
+  bool use_avx2 = true;      // "exact": AVX2 rows where the CPU has it (the same depths as the baseline rows; false = baseline).
 
   bool Check(std::string* why) const;
 };

@@ -35,15 +35,16 @@ std::vector<cv::Vec3b> BgrToLab(const std::vector<cv::Vec3b>& bgr) {
   return lab;
 }
 
-FloorAppearance SampleFloor(const cv::Mat& bgr, int roi_top) {
+FloorAppearance SampleFloor(const cv::Mat& bgr, int roi_top, int step) {
+  step = std::max(1, step);
   const int rows = bgr.rows, cols = bgr.cols;
   const int image_rows = rows + roi_top;
   const int v0 = std::clamp(static_cast<int>(0.88 * image_rows) - roi_top, 0, rows - 1);
   const int u0 = static_cast<int>(0.35 * cols);
   const int u1 = std::max(u0 + 1, static_cast<int>(0.65 * cols));
   std::vector<cv::Vec3b> patch;
-  for (int v = v0; v < rows; v += 2) {
-    for (int u = u0; u < u1; u += 2) patch.push_back(bgr.at<cv::Vec3b>(v, u));
+  for (int v = v0; v < rows; v += step) {
+    for (int u = u0; u < u1; u += step) patch.push_back(bgr.at<cv::Vec3b>(v, u));
   }
   std::vector<float> channel[3];
   std::vector<cv::Vec3f> pixels;

@@ -24,8 +24,9 @@ float LabDistance(const cv::Vec3f& a, const cv::Vec3f& b);
 std::vector<cv::Vec3b> BgrToLab(const std::vector<cv::Vec3b>& bgr);
 
 // `bgr`: the ROI rows [roi_top, image rows) of the 8-bit BGR image (CV_8UC3). Only the sampled
-// pixels are converted to Lab.
-FloorAppearance SampleFloor(const cv::Mat& bgr, int roi_top);
+// pixels are converted to Lab: every `step`-th pixel of every `step`-th row (2 at up to 640 px
+// wide; large images need no more samples than that).
+FloorAppearance SampleFloor(const cv::Mat& bgr, int roi_top, int step = 2);
 
 // How much a line looks like the floor's upper boundary, in [0, 1]: the floor-likeness of the
 // strip just below it times the unlikeness of the strip above. Near 1 for the junction; near 0

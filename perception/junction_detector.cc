@@ -380,7 +380,7 @@ Status DetectJunctionsIn(const cv::Mat& bgr, const cv::Mat* halved,
                                      ? options.max_inclination_deg
                                      : 90.0 - std::atan2(height, width) * 180.0 / M_PI;
   const cv::Mat roi = color.rowRange(roi_top, height);
-  const FloorAppearance floor = SampleFloor(roi, roi_top);
+  const FloorAppearance floor = SampleFloor(roi, roi_top, 2 * scale);
   std::vector<JunctionCandidate> left, right;
   for (const auto& line : lines) {
     if (line.length < min_length || line.length > max_length) continue;

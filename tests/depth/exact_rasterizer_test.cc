@@ -69,6 +69,27 @@ TEST(ExactRasterizerTest, NoCeilingCutsWallsAtMaxHeightAndRange) {
   EXPECT_GT(zeros, 100);
 }
 
+// The four row kernels (end wall or not, ceiling or cut walls), AVX2 and baseline: the same
+// depths to the bit, as they do the same IEEE operations.
+TEST(ExactRasterizerTest, Avx2AndBaselineRowsGiveTheSameDepths) {
+  const Camera camera = TestCamera();
+  for (const double end_distance : {0.0, 6.0}) {
+    for (const double ceiling : {0.0, 2.7}) {
+      CorridorGeometry g = TestGeometry(0.1, 0.08, 0.2, 2.3, ceiling);
+      g.end_distance = end_distance;
+      RasterizerOptions options;
+      options.max_range = 10.0;
+      options.max_height = 1.8;
+      cv::Mat fast, baseline;
+      ASSERT_TRUE(ExactRasterizer(options).Render(g, camera, &fast).ok());
+      options.use_avx2 = false;
+      ASSERT_TRUE(ExactRasterizer(options).Render(g, camera, &baseline).ok());
+      EXPECT_EQ(cv::norm(fast, baseline, cv::NORM_INF), 0.0) << end_distance << " " << ceiling;
+      EXPECT_GT(cv::countNonZero(baseline), baseline.total() / 2) << end_distance << " " << ceiling;
+    }
+  }
+}
+
 TEST(ExactRasterizerTest, HonoursLensDistortionThroughRayTable) {
   Camera camera = TestCamera();
   camera.distortion = {-0.25, 0.06, 0.0, 0.0, 0.0};

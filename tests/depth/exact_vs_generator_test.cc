@@ -26,13 +26,17 @@ TEST(ExactVsGeneratorTest, PureBoxMatchesTheRayCaster) {
     cv::Mat truth;
     frame.depth.convertTo(truth, CV_16U, 1000.0);
     truth.convertTo(truth, CV_32F, 1e-3);
-    RasterizerOptions options;
-    options.max_range = 40;
-    cv::Mat depth;
-    ASSERT_TRUE(ExactRasterizer(options).Render(frame.truth, camera, &depth).ok());
-    const DepthMetrics m = ComputeDepthMetrics(depth, truth, 40.0);
-    EXPECT_LT(m.abs_rel, 0.001);
-    EXPECT_DOUBLE_EQ(m.coverage, 1.0);
+    // Both row kernels: AVX2 (where the CPU has it) and the baseline.
+    for (const bool avx2 : {true, false}) {
+      RasterizerOptions options;
+      options.max_range = 40;
+      options.use_avx2 = avx2;
+      cv::Mat depth;
+      ASSERT_TRUE(ExactRasterizer(options).Render(frame.truth, camera, &depth).ok());
+      const DepthMetrics m = ComputeDepthMetrics(depth, truth, 40.0);
+      EXPECT_LT(m.abs_rel, 0.001) << avx2;
+      EXPECT_DOUBLE_EQ(m.coverage, 1.0) << avx2;
+    }
   }
 }
 
@@ -57,8 +61,13 @@ TEST(ExactVsGeneratorTest, PureBoxWithAnEndWallMatchesTheRayCaster) {
     g.end_distance = scene.length - pose.distance;  // Z_W of the end wall, by the scene's layout.
     RasterizerOptions options;
     options.max_range = 40;
-    cv::Mat with_wall, without_wall;
+    cv::Mat with_wall, without_wall, baseline;
     ASSERT_TRUE(ExactRasterizer(options).Render(g, camera, &with_wall).ok());
+    // The baseline rows (no AVX2) give the same depths.
+    options.use_avx2 = false;
+    ASSERT_TRUE(ExactRasterizer(options).Render(g, camera, &baseline).ok());
+    EXPECT_EQ(cv::norm(with_wall, baseline, cv::NORM_INF), 0.0);
+    options.use_avx2 = true;
     const DepthMetrics m = ComputeDepthMetrics(with_wall, truth, 40.0);
     EXPECT_LT(m.abs_rel, 0.001);
     EXPECT_DOUBLE_EQ(m.coverage, 1.0);
