@@ -341,7 +341,7 @@ Status DetectJunctionsIn(const cv::Mat& bgr, const cv::Mat* halved,
     crop_top = 0;
     work = *halved;
   } else {
-    for (int s = 1; s < scale; s *= 2) cv::pyrDown(work, work);
+    for (int s = 1; s < scale; s *= 2) PyrDown(work, &work);
   }
   const int work_roi_top = roi_top / scale - crop_top / scale;
   EdgeSegments found =

@@ -8,16 +8,21 @@ namespace corridor {
 
 // An image searched at a lower resolution, with the camera that matches it.
 struct WorkingImage {
-  cv::Mat bgr;     // The image halved (cv::pyrDown) until it fits; the input's own pixels if not.
+  cv::Mat bgr;     // The image halved (PyrDown) until it fits; the input's own pixels if not.
   Camera camera;   // The input camera scaled to bgr: f halved, principal point moved to match.
   int scale = 1;   // Input pixels per working pixel: 2 to the number of halvings.
 };
+
+// cv::pyrDown(image, *halved) with the default size and border: the same pixels, computed about
+// twice as fast with AVX2 for 8-bit images of 1 to 4 channels at least 3 px on a side (every
+// other image, or a CPU without AVX2, goes to cv::pyrDown itself).
+void PyrDown(const cv::Mat& image, cv::Mat* halved);
 
 // How many input pixels one working pixel spans when an image `width` wide is halved until it is
 // at most max_width wide (0: never): 1, 2, 4, ... (cv::pyrDown rounds odd sizes up).
 int WorkingScale(int width, int max_width);
 
-// Halves the image (cv::pyrDown) until it is at most max_width wide (0: never), and scales the
+// Halves the image (PyrDown) until it is at most max_width wide (0: never), and scales the
 // camera to match: cv::pyrDown's kernel is centred on every second pixel, so pixel i of a halved
 // image lies at input pixel 2 i, and f, cx and cy all halve. Distortion coefficients act on
 // normalised coordinates and carry over unchanged.

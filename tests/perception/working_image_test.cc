@@ -56,6 +56,43 @@ TEST(WorkingImageTest, ANarrowEnoughImageIsLeftAlone) {
   }
 }
 
+// PyrDown against OpenCV's own pyrDown: the same pixels for every size (odd, even, the smallest
+// it handles and smaller), channel count, a view into a larger image, and a float image (which
+// OpenCV handles).
+TEST(WorkingImageTest, PyrDownGivesCvPyrDownsPixels) {
+  cv::RNG rng(17);
+  for (const int channels : {1, 3, 4}) {
+    for (const cv::Size size : {cv::Size(1280, 720), cv::Size(641, 361), cv::Size(7, 5),
+                                cv::Size(3, 3), cv::Size(4, 3), cv::Size(2, 2), cv::Size(1, 5)}) {
+      cv::Mat image(size, CV_8UC(channels));
+      rng.fill(image, cv::RNG::UNIFORM, 0, 256);
+      cv::Mat ours, theirs;
+      PyrDown(image, &ours);
+      cv::pyrDown(image, theirs);
+      ASSERT_EQ(ours.size(), theirs.size()) << size << " x" << channels;
+      ASSERT_EQ(ours.type(), theirs.type());
+      EXPECT_EQ(cv::norm(ours, theirs, cv::NORM_INF), 0.0) << size << " x" << channels;
+    }
+  }
+  cv::Mat big(100, 90, CV_8UC3);
+  rng.fill(big, cv::RNG::UNIFORM, 0, 256);
+  const cv::Mat view = big(cv::Rect(5, 7, 61, 40));
+  cv::Mat ours, theirs;
+  PyrDown(view, &ours);
+  cv::pyrDown(view, theirs);
+  EXPECT_EQ(cv::norm(ours, theirs, cv::NORM_INF), 0.0);
+  cv::Mat real(31, 29, CV_32FC3);
+  rng.fill(real, cv::RNG::UNIFORM, 0.0, 1.0);
+  PyrDown(real, &ours);
+  cv::pyrDown(real, theirs);
+  EXPECT_EQ(cv::norm(ours, theirs, cv::NORM_INF), 0.0);
+  // In place, as HalveToWidth calls it.
+  cv::Mat same = big.clone();
+  PyrDown(same, &same);
+  cv::pyrDown(big, theirs);
+  EXPECT_EQ(cv::norm(same, theirs, cv::NORM_INF), 0.0);
+}
+
 // The recoverer searches the ceiling of images wider than 640 px at half resolution (its
 // search_max_width): there it still lands within 3% of the truth.
 TEST(WorkingImageTest, TheCeilingOfALargeFrameIsFoundAtHalfResolution) {
