@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <iomanip>
 #include <mutex>
 #include <sstream>
 
@@ -110,6 +111,8 @@ bool RecoverDepthOptions::Check(std::string* why) const {
     reason = "ceiling: " + reason;
   } else if (!end_wall.Check(&reason)) {
     reason = "end_wall: " + reason;
+  } else if (!inner_line.Check(&reason)) {
+    reason = "inner_line: " + reason;
   }
   if (reason.empty()) return true;
   if (why != nullptr) *why = reason;
@@ -334,6 +337,11 @@ Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* res
         !result->width_held) {
       CheckBaseboards(camera, search, &geometry, result);
     }
+    if (options_.ceiling_checks_inner_lines && result->junctions.status.ok() &&
+        !result->width_held) {
+      status = MoveInnerWall(search, &geometry, result);
+      if (!status.ok()) return finish(status);
+    }
   }
   result->times.ceiling = SecondsSince(stage);
   stage = Clock::now();
@@ -415,6 +423,33 @@ void DepthRecoverer::CheckBaseboards(const Camera& camera, const WorkingImage& s
                       " junction: the lower of two parallel lines (the upper one a baseboard's "
                       "top), with which both ceiling junctions agree",
                   result);
+}
+
+Status DepthRecoverer::MoveInnerWall(const WorkingImage& search, CorridorGeometry* geometry,
+                                     RecoverDepthResult* result) const {
+  // Both ceiling junctions found where the walls put them, agreeing: nothing to check.
+  const double disagreement = CeilingDisagreement(result->ceiling, geometry->camera_height);
+  if (disagreement >= 0 && disagreement <= std::log(1 + options_.inner_line.min_disagreement)) {
+    return Status::Ok();
+  }
+  CorridorGeometry moved = *geometry;
+  const InnerLineCheck check =
+      CheckInnerLine(search.bgr, search.camera, options_.ceiling, options_.inner_line, &moved);
+  if (!check.moved || !CheckPlausible(moved, options_).ok()) return Status::Ok();
+  CeilingEstimate ceiling;
+  const Status status =
+      DetectCeiling(search.bgr, search.camera, moved, options_.ceiling, &ceiling);
+  if (!status.ok()) return status;
+  moved.ceiling_height = ceiling.found ? ceiling.height : options_.ceiling_height;
+  result->ceiling = ceiling;
+  *geometry = moved;
+  std::ostringstream how;
+  how << (check.side == 0 ? "left" : "right") << " wall moved out " << std::setprecision(3)
+      << check.factor << "x: its junction is a line inside the floor (its ceiling junction gave "
+      << check.side_height[check.side] << " m, the other side's "
+      << check.side_height[1 - check.side] << " m)";
+  AddFallbackNote(how.str(), result);
+  return Status::Ok();
 }
 
 Status RecoverDepth(const cv::Mat& image, const Camera& camera, const RecoverDepthOptions& options,

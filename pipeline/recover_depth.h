@@ -16,6 +16,7 @@
 #include "perception/junction_detector.h"
 #include "perception/junction_lines.h"
 #include "perception/working_image.h"
+#include "pipeline/inner_line_check.h"
 
 namespace corridor {
 
@@ -38,6 +39,8 @@ struct RecoverDepthOptions {
   bool estimate_ceiling = true;            // Without a known height, look for the ceiling/wall junctions.
   CeilingDetectorOptions ceiling;          // Ceiling-height search (beyond the paper).
   bool ceiling_checks_baseboards = true;   // Where a baseboard gave two parallel lines and the upper one was taken, take the lower one when it makes both ceiling junctions agree.
+  bool ceiling_checks_inner_lines = true;  // Where a line inside the floor (grout, a box's edge) was taken for a junction, move that wall out to where its ceiling junction agrees with the other side's.
+  InnerLineCheckOptions inner_line;        // That check's thresholds.
   double width_prior = 0.0;                // Width for frames where one junction is hidden, m (0 = none; a sequence uses the previous frame's).
   double max_width_change = 0.15;          // In a sequence, a width this much (relative) narrower than the previous frame's means one junction is
                                            // wrong (a box edge or grout line taken for it): the previous width is held from the wall that moved less (0 = off).
@@ -117,6 +120,12 @@ class DepthRecoverer {
   // solver summary, ceiling).
   // `search` is the image and camera the ceiling search runs on (search_max_width).
   void CheckBaseboards(const Camera& camera, const WorkingImage& search, CorridorGeometry* geometry,
+                       RecoverDepthResult* result) const;
+
+  // ceiling_checks_inner_lines: unless both ceiling junctions agree already, the inner-line check
+  // (inner_line_check.h) on the search image; a moved wall updates *geometry, the ceiling and the
+  // fallback note. Fails only when the ceiling search does.
+  Status MoveInnerWall(const WorkingImage& search, CorridorGeometry* geometry,
                        RecoverDepthResult* result) const;
 
   const RecoverDepthOptions options_;

@@ -30,6 +30,9 @@ DEFINE_double(max_width_change, 0.15,
 DEFINE_bool(end_wall, true,
             "Look for a wall across the corridor where both junctions end, and close the depth "
             "there (beyond the paper)");
+DEFINE_bool(inner_line_check, true,
+            "Where a line inside the floor (grout, a box's edge) was taken for a junction, move that "
+            "wall out to where its ceiling junction agrees with the other side's (beyond the paper)");
 DEFINE_int32(search_max_width, 640,
              "Wider images are halved before the ceiling and end-wall searches until they fit, px "
              "(0 = full resolution)");
@@ -54,6 +57,7 @@ Status RecoverDepthOptionsFromFlags(RecoverDepthOptions* options) {
   options->rasterizer_options.max_height = FLAGS_max_height;
   options->ceiling_height = FLAGS_ceiling_height;
   options->estimate_end_wall = FLAGS_end_wall;
+  options->ceiling_checks_inner_lines = FLAGS_inner_line_check;
   options->width_prior = FLAGS_width_prior;
   options->max_width_change = FLAGS_max_width_change;
   options->points_per_line = FLAGS_points_per_line;

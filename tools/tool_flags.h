@@ -21,6 +21,7 @@ DECLARE_double(max_range);
 DECLARE_double(max_height);
 DECLARE_double(ceiling_height);
 DECLARE_bool(end_wall);
+DECLARE_bool(inner_line_check);
 DECLARE_double(width_prior);
 DECLARE_double(max_width_change);
 DECLARE_int32(points_per_line);

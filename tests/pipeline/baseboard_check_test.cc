@@ -42,6 +42,9 @@ void RecoverBoth(const std::string& scene, size_t pose, BothRuns* runs) {
   ASSERT_FALSE(runs->frame.bgr.empty());
   RecoverDepthOptions off;
   off.ceiling_checks_baseboards = false;
+  // Without the baseboard check, the inner-line check (which runs after it) would take the other
+  // wall for the wrong one; off too, so that `upper` is the upper line's own geometry.
+  off.ceiling_checks_inner_lines = false;
   ASSERT_TRUE(RecoverDepth(runs->frame.bgr, runs->preset.camera, off, &runs->upper).ok());
   ASSERT_TRUE(
       RecoverDepth(runs->frame.bgr, runs->preset.camera, RecoverDepthOptions(), &runs->checked)
@@ -100,6 +103,9 @@ TEST(BaseboardCheckTest, AgreeingCeilingJunctionsChangeNothing) {
   ASSERT_FALSE(frame.bgr.empty());
   RecoverDepthOptions off;
   off.ceiling_checks_baseboards = false;
+  // Without the baseboard check, the inner-line check (which runs after it) would take the other
+  // wall for the wrong one; off too, so that `upper` is the upper line's own geometry.
+  off.ceiling_checks_inner_lines = false;
   RecoverDepthResult a, b;
   ASSERT_TRUE(RecoverDepth(frame.bgr, preset.camera, off, &a).ok());
   ASSERT_TRUE(RecoverDepth(frame.bgr, preset.camera, RecoverDepthOptions(), &b).ok());

@@ -1,0 +1,59 @@
+#include "pipeline/inner_line_check.h"
+
+#include <cmath>
+
+namespace corridor {
+
+bool InnerLineCheckOptions::Check(std::string* why) const {
+  std::string reason;
+  if (!(min_disagreement > 0 && std::isfinite(min_disagreement))) {
+    reason = "min_disagreement must be positive";
+  } else if (!(min_support > 0 && min_support <= 1)) {
+    reason = "min_support must be in (0, 1]";
+  } else if (!(min_above_camera > 0 && max_above_camera > min_above_camera &&
+               std::isfinite(max_above_camera))) {
+    reason = "the search needs 0 < min_above_camera < max_above_camera";
+  }
+  if (reason.empty()) return true;
+  if (why != nullptr) *why = reason;
+  return false;
+}
+
+InnerLineCheck CheckInnerLine(const cv::Mat& bgr, const Camera& camera,
+                              const CeilingDetectorOptions& ceiling,
+                              const InnerLineCheckOptions& options, CorridorGeometry* geometry) {
+  InnerLineCheck check;
+  const double h = geometry->camera_height;
+  CeilingDetectorOptions wide = ceiling;
+  wide.min_height = h + options.min_above_camera;
+  wide.max_height = h + options.max_above_camera;
+  CeilingEstimate sides;
+  if (!DetectCeiling(bgr, camera, *geometry, wide, &sides).ok()) return check;
+  for (int s = 0; s < 2; ++s) {
+    check.side_height[s] = sides.side_height[s];
+    check.side_support[s] = sides.side_support[s];
+  }
+  if (sides.side_support[0] < options.min_support || sides.side_support[1] < options.min_support) {
+    return check;
+  }
+  // Each side's ceiling above the camera: proportional to its wall's distance.
+  const double above[2] = {sides.side_height[0] - h, sides.side_height[1] - h};
+  if (!(above[0] > 0) || !(above[1] > 0)) return check;
+  const int inner = above[0] < above[1] ? 0 : 1;
+  const double factor = above[1 - inner] / above[inner];
+  const double trusted = sides.side_height[1 - inner];
+  if (!(factor > 1 + options.min_disagreement) || trusted < ceiling.min_height ||
+      trusted > ceiling.max_height) {
+    return check;
+  }
+  double distance[2] = {geometry->LeftDistance(), geometry->RightDistance()};
+  distance[inner] *= factor;
+  geometry->width = distance[0] + distance[1];
+  geometry->offset = 0.5 * (distance[0] - distance[1]);
+  check.moved = true;
+  check.side = inner;
+  check.factor = factor;
+  return check;
+}
+
+}  // namespace corridor

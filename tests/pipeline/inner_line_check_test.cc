@@ -1,0 +1,115 @@
+// The inner-line check (pipeline/inner_line_check.h): a wall put too near (a line inside the
+// floor taken for its junction) is moved out to where its ceiling junction meets the other
+// side's ceiling. Truth from the generator: its frames and their true geometry.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "pipeline/inner_line_check.h"
+#include "pipeline/recover_depth.h"
+#include "synth/corridor_renderer.h"
+#include "synth/presets.h"
+
+namespace corridor {
+namespace {
+
+// A plain corridor with its ceiling junctions in view.
+synth::Frame PlainFrame(const Camera& camera) {
+  synth::SceneOptions scene;
+  scene.width = 2.4;
+  scene.ceiling_height = 2.7;
+  scene.clutter = 0;
+  scene.seed = 3;
+  synth::Frame frame;
+  EXPECT_TRUE(synth::RenderFrame(synth::BuildScene(scene), camera,
+                                 synth::CameraPose{0.05, 0.04, 0.25, 0.66, 3.0}, &frame)
+                  .ok());
+  return frame;
+}
+
+// The true geometry with one wall's distance scaled down, as a line inside the floor gives it:
+// the check moves that wall (and only it) back out to the truth.
+TEST(InnerLineCheckTest, AWallPutTooNearIsMovedBackOut) {
+  const Camera camera = synth::PaperCamera(0.66);
+  const synth::Frame frame = PlainFrame(camera);
+  ASSERT_FALSE(frame.bgr.empty());
+  const CorridorGeometry& truth = frame.truth;
+  for (const int side : {0, 1}) {
+    for (const double shrink : {0.5, 0.75}) {
+      double distance[2] = {truth.LeftDistance(), truth.RightDistance()};
+      distance[side] *= shrink;
+      CorridorGeometry g = truth;
+      g.width = distance[0] + distance[1];
+      g.offset = 0.5 * (distance[0] - distance[1]);
+      const InnerLineCheck check =
+          CheckInnerLine(frame.bgr, camera, CeilingDetectorOptions(), InnerLineCheckOptions(), &g);
+      ASSERT_TRUE(check.moved) << side << " " << shrink;
+      EXPECT_EQ(check.side, side);
+      EXPECT_NEAR(check.factor, 1 / shrink, 0.05 / shrink);
+      EXPECT_NEAR(g.width, truth.width, 0.03 * truth.width) << side << " " << shrink;
+      EXPECT_NEAR(g.offset, truth.offset, 0.05) << side << " " << shrink;
+      EXPECT_EQ(g.yaw, truth.yaw);
+      EXPECT_EQ(g.pitch, truth.pitch);
+    }
+  }
+}
+
+// The true geometry: both ceiling junctions agree, nothing moves.
+TEST(InnerLineCheckTest, TheTrueGeometryStays) {
+  const Camera camera = synth::PaperCamera(0.66);
+  const synth::Frame frame = PlainFrame(camera);
+  CorridorGeometry g = frame.truth;
+  const InnerLineCheck check =
+      CheckInnerLine(frame.bgr, camera, CeilingDetectorOptions(), InnerLineCheckOptions(), &g);
+  EXPECT_FALSE(check.moved);
+  EXPECT_GT(check.side_support[0], 0.45);
+  EXPECT_GT(check.side_support[1], 0.45);
+  EXPECT_NEAR(check.side_height[0], frame.truth.ceiling_height, 0.03 * frame.truth.ceiling_height);
+  EXPECT_NEAR(check.side_height[1], frame.truth.ceiling_height, 0.03 * frame.truth.ceiling_height);
+  EXPECT_EQ(g.width, frame.truth.width);
+}
+
+// Frame 0 of the paper preset's Cord_H02: the right junction is a line inside the floor (the
+// width 24% too narrow without the check). With it, the width follows the truth and the note
+// says which wall moved.
+TEST(InnerLineCheckTest, ThePipelineMovesTheWallOfAnInnerLine) {
+  synth::ScenePreset preset;
+  for (const auto& p : synth::PaperPreset()) {
+    if (p.name == "Cord_H02") preset = p;
+  }
+  ASSERT_EQ(preset.name, "Cord_H02");
+  synth::Frame frame;
+  ASSERT_TRUE(synth::RenderFrame(synth::BuildScene(preset.scene), preset.camera,
+                                 preset.poses.at(0), &frame)
+                  .ok());
+  RecoverDepthOptions off;
+  off.ceiling_checks_inner_lines = false;
+  RecoverDepthResult unchecked, checked;
+  ASSERT_TRUE(RecoverDepth(frame.bgr, preset.camera, off, &unchecked).ok());
+  ASSERT_TRUE(RecoverDepth(frame.bgr, preset.camera, RecoverDepthOptions(), &checked).ok());
+  EXPECT_LT(unchecked.geometry.width, 0.85 * frame.truth.width);  // The premise.
+  EXPECT_NEAR(checked.geometry.width, frame.truth.width, 0.05 * frame.truth.width);
+  EXPECT_NE(checked.fallback.find("right wall moved out"), std::string::npos)
+      << checked.fallback;
+  EXPECT_NEAR(checked.geometry.ceiling_height, frame.truth.ceiling_height,
+              0.05 * frame.truth.ceiling_height);
+}
+
+TEST(InnerLineCheckTest, BadOptionsAreRejected) {
+  InnerLineCheckOptions options;
+  std::string why;
+  EXPECT_TRUE(options.Check(&why));
+  options.min_disagreement = 0;
+  EXPECT_FALSE(options.Check(&why));
+  EXPECT_NE(why.find("min_disagreement"), std::string::npos) << why;
+  options = InnerLineCheckOptions();
+  options.max_above_camera = options.min_above_camera;
+  EXPECT_FALSE(options.Check(&why));
+  RecoverDepthOptions recover;
+  recover.inner_line.min_support = 2;
+  EXPECT_FALSE(recover.Check(&why));
+  EXPECT_NE(why.find("inner_line"), std::string::npos) << why;
+}
+
+}  // namespace
+}  // namespace corridor
