@@ -339,7 +339,7 @@ Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* res
     }
     if (options_.ceiling_checks_inner_lines && result->junctions.status.ok() &&
         !result->width_held) {
-      status = MoveInnerWall(search, &geometry, result);
+      status = MoveInnerWall(search, previous, &geometry, result);
       if (!status.ok()) return finish(status);
     }
   }
@@ -425,7 +425,8 @@ void DepthRecoverer::CheckBaseboards(const Camera& camera, const WorkingImage& s
                   result);
 }
 
-Status DepthRecoverer::MoveInnerWall(const WorkingImage& search, CorridorGeometry* geometry,
+Status DepthRecoverer::MoveInnerWall(const WorkingImage& search,
+                                     const CorridorGeometry* previous, CorridorGeometry* geometry,
                                      RecoverDepthResult* result) const {
   // Both ceiling junctions found where the walls put them, agreeing: nothing to check.
   const double disagreement = CeilingDisagreement(result->ceiling, geometry->camera_height);
@@ -436,6 +437,13 @@ Status DepthRecoverer::MoveInnerWall(const WorkingImage& search, CorridorGeometr
   const InnerLineCheck check =
       CheckInnerLine(search.bgr, search.camera, options_.ceiling, options_.inner_line, &moved);
   if (!check.moved || !CheckPlausible(moved, options_).ok()) return Status::Ok();
+  // In a sequence the previous frame's width must agree better with the moved wall than with the
+  // line it replaces (a misjudged side would otherwise carry on through the width hold).
+  if (previous != nullptr && previous->width > 0 &&
+      std::abs(std::log(moved.width / previous->width)) >=
+          std::abs(std::log(geometry->width / previous->width))) {
+    return Status::Ok();
+  }
   CeilingEstimate ceiling;
   const Status status =
       DetectCeiling(search.bgr, search.camera, moved, options_.ceiling, &ceiling);

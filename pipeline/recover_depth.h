@@ -124,9 +124,10 @@ class DepthRecoverer {
 
   // ceiling_checks_inner_lines: unless both ceiling junctions agree already, the inner-line check
   // (inner_line_check.h) on the search image; a moved wall updates *geometry, the ceiling and the
-  // fallback note. Fails only when the ceiling search does.
-  Status MoveInnerWall(const WorkingImage& search, CorridorGeometry* geometry,
-                       RecoverDepthResult* result) const;
+  // fallback note. In a sequence (`previous` not null) the move must bring the width nearer the
+  // previous frame's. Fails only when the ceiling search does.
+  Status MoveInnerWall(const WorkingImage& search, const CorridorGeometry* previous,
+                       CorridorGeometry* geometry, RecoverDepthResult* result) const;
 
   const RecoverDepthOptions options_;
   const std::unique_ptr<CorridorSolver> solver_;
