@@ -6,6 +6,8 @@
 //               of the ROI (Lab of the sampled pixels only)
 //   ceiling     DetectCeiling on the frame's true walls
 //   end_wall    DetectEndWall on the frame's true geometry
+//   inner_line  CheckInnerLine on the true geometry with the right wall put at 60% of its distance
+//               (as a line inside the floor puts it): the wide ceiling search that moves it back
 //   solve/NAME  each solver on the detected junctions' points
 //   rasterize/NAME  each rasteriser on the closed_form+lm geometry
 // OpenCV runs on one thread.
@@ -20,6 +22,7 @@
 #include "perception/ceiling_detector.h"
 #include "perception/end_wall_detector.h"
 #include "perception/line_segments.h"
+#include "pipeline/inner_line_check.h"
 #include "pipeline/recover_depth.h"
 
 namespace corridor {
@@ -100,6 +103,29 @@ void EndWall(benchmark::State& state, int width, int height) {
   state.counters["found"] = estimate.found;
 }
 
+// The inner-line check where it acts: the right wall too near, as a grout line or a box's edge
+// taken for its junction puts it (the check's wide ceiling search, on the frame itself).
+void InnerLine(benchmark::State& state, int width, int height) {
+  cv::setNumThreads(1);
+  const bench::BenchFrame& input = bench::PaperLikeFrame(width, height);
+  const CorridorGeometry& truth = input.frame.truth;
+  CorridorGeometry near = truth;
+  const double right = 0.6 * truth.RightDistance();
+  near.width = truth.LeftDistance() + right;
+  near.offset = 0.5 * (truth.LeftDistance() - right);
+  const CeilingDetectorOptions ceiling;
+  const InnerLineCheckOptions options;
+  CorridorGeometry moved;
+  InnerLineCheck check;
+  for (auto _ : state) {
+    moved = near;
+    check = CheckInnerLine(input.frame.bgr, input.camera, ceiling, options, &moved);
+    benchmark::DoNotOptimize(check);
+  }
+  state.counters["moved"] = check.moved;
+  state.counters["width_error_mm"] = 1000 * std::abs(moved.width - truth.width);
+}
+
 // The solvers' input: the detected junctions of the frame.
 bool DetectedObservation(const bench::BenchFrame& input, CorridorObservation* observation) {
   JunctionPair pair;
@@ -164,6 +190,8 @@ const bool registered = [] {
     benchmark::RegisterBenchmark(("Stages/ceiling" + suffix).c_str(), Ceiling, w, h)
         ->Unit(benchmark::kMicrosecond);
     benchmark::RegisterBenchmark(("Stages/end_wall" + suffix).c_str(), EndWall, w, h)
+        ->Unit(benchmark::kMicrosecond);
+    benchmark::RegisterBenchmark(("Stages/inner_line" + suffix).c_str(), InnerLine, w, h)
         ->Unit(benchmark::kMicrosecond);
     for (const char* solver : {"grid", "closed_form", "lm", "closed_form+lm", "joint"}) {
       benchmark::RegisterBenchmark(("Stages/solve/" + std::string(solver) + suffix).c_str(), Solve,
