@@ -10,9 +10,8 @@ bool InnerLineCheckOptions::Check(std::string* why) const {
     reason = "min_disagreement must be positive";
   } else if (!(min_support > 0 && min_support <= 1)) {
     reason = "min_support must be in (0, 1]";
-  } else if (!(min_above_camera > 0 && max_above_camera > min_above_camera &&
-               std::isfinite(max_above_camera))) {
-    reason = "the search needs 0 < min_above_camera < max_above_camera";
+  } else if (!(min_above_camera > 0 && std::isfinite(min_above_camera))) {
+    reason = "min_above_camera must be positive";
   }
   if (reason.empty()) return true;
   if (why != nullptr) *why = reason;
@@ -25,8 +24,9 @@ InnerLineCheck CheckInnerLine(const cv::Mat& bgr, const Camera& camera,
   InnerLineCheck check;
   const double h = geometry->camera_height;
   CeilingDetectorOptions wide = ceiling;
+  // The side too near gives the lower ceiling, the other one at most max_height.
   wide.min_height = h + options.min_above_camera;
-  wide.max_height = h + options.max_above_camera;
+  if (!(wide.max_height > wide.min_height)) return check;
   CeilingEstimate sides;
   if (!DetectCeiling(bgr, camera, *geometry, wide, &sides).ok()) return check;
   for (int s = 0; s < 2; ++s) {

@@ -19,8 +19,7 @@ namespace corridor {
 struct InnerLineCheckOptions {
   double min_disagreement = 0.15;  // Least relative difference of the two sides' ceiling heights that moves a wall.
   double min_support = 0.35;       // Least fraction of each side's ceiling junction on edges (the ceiling search's own minimum).
-  double min_above_camera = 0.2;   // The wide search: ceilings from this far above the camera, m...
-  double max_above_camera = 9.0;   // ... to this far.
+  double min_above_camera = 0.2;   // The wide search: ceilings from this far above the camera, m, up to the ceiling search's max_height.
 
   bool Check(std::string* why) const;
 };

@@ -428,9 +428,12 @@ void DepthRecoverer::CheckBaseboards(const Camera& camera, const WorkingImage& s
 Status DepthRecoverer::MoveInnerWall(const WorkingImage& search,
                                      const CorridorGeometry* previous, CorridorGeometry* geometry,
                                      RecoverDepthResult* result) const {
-  // Both ceiling junctions found where the walls put them, agreeing: nothing to check.
-  const double disagreement = CeilingDisagreement(result->ceiling, geometry->camera_height);
-  if (disagreement >= 0 && disagreement <= std::log(1 + options_.inner_line.min_disagreement)) {
+  // Both ceiling junctions found where the walls put them, agreeing: nothing to check. Neither
+  // found: no side to trust (the trusted one must be in the ceiling search's range).
+  const CeilingEstimate& found = result->ceiling;
+  const double disagreement = CeilingDisagreement(found, geometry->camera_height);
+  if ((disagreement >= 0 && disagreement <= std::log(1 + options_.inner_line.min_disagreement)) ||
+      std::max(found.side_support[0], found.side_support[1]) < options_.inner_line.min_support) {
     return Status::Ok();
   }
   CorridorGeometry moved = *geometry;

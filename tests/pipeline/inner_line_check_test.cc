@@ -103,8 +103,9 @@ TEST(InnerLineCheckTest, BadOptionsAreRejected) {
   EXPECT_FALSE(options.Check(&why));
   EXPECT_NE(why.find("min_disagreement"), std::string::npos) << why;
   options = InnerLineCheckOptions();
-  options.max_above_camera = options.min_above_camera;
+  options.min_above_camera = -1;
   EXPECT_FALSE(options.Check(&why));
+  EXPECT_NE(why.find("min_above_camera"), std::string::npos) << why;
   RecoverDepthOptions recover;
   recover.inner_line.min_support = 2;
   EXPECT_FALSE(recover.Check(&why));
