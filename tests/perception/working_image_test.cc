@@ -8,6 +8,7 @@
 
 #include "perception/ceiling_detector.h"
 #include "synth/corridor_renderer.h"
+#include "tests/support/corridor_frame.h"
 
 namespace corridor {
 namespace {
@@ -97,13 +98,9 @@ TEST(WorkingImageTest, PyrDownGivesCvPyrDownsPixels) {
 // search_max_width): there it still lands within 3% of the truth.
 TEST(WorkingImageTest, TheCeilingOfALargeFrameIsFoundAtHalfResolution) {
   const Camera camera = Camera::FromHorizontalFov(1280, 720, 85.0 * M_PI / 180, 0.7);
-  synth::SceneOptions scene;
-  scene.width = 2.2;
-  scene.ceiling_height = 2.8;
-  scene.seed = 5;
-  const synth::CorridorScene built = synth::BuildScene(scene);
-  synth::Frame frame;
-  ASSERT_TRUE(synth::RenderFrame(built, camera, {0.06, 0.04, 0.15, 0.7, 3.0}, &frame).ok());
+  const synth::Frame frame = testing_util::RenderCorridorFrame(
+      camera, 2.2, 2.8, 5, synth::CameraPose{0.06, 0.04, 0.15, 0.7, 3.0});
+  ASSERT_FALSE(frame.bgr.empty());
   const WorkingImage work = HalveToWidth(frame.bgr, camera, 640);
   ASSERT_EQ(work.scale, 2);
   CeilingEstimate estimate;

@@ -9,22 +9,15 @@
 #include "pipeline/recover_depth.h"
 #include "synth/corridor_renderer.h"
 #include "synth/presets.h"
+#include "tests/support/corridor_frame.h"
 
 namespace corridor {
 namespace {
 
 // A plain corridor with its ceiling junctions in view.
 synth::Frame PlainFrame(const Camera& camera) {
-  synth::SceneOptions scene;
-  scene.width = 2.4;
-  scene.ceiling_height = 2.7;
-  scene.clutter = 0;
-  scene.seed = 3;
-  synth::Frame frame;
-  EXPECT_TRUE(synth::RenderFrame(synth::BuildScene(scene), camera,
-                                 synth::CameraPose{0.05, 0.04, 0.25, 0.66, 3.0}, &frame)
-                  .ok());
-  return frame;
+  return testing_util::RenderCorridorFrame(camera, 2.4, 2.7, 3,
+                                           synth::CameraPose{0.05, 0.04, 0.25, 0.66, 3.0}, 0.0);
 }
 
 // The true geometry with one wall's distance scaled down, as a line inside the floor gives it:

@@ -9,20 +9,16 @@
 
 #include "pipeline/recover_depth.h"
 #include "synth/corridor_renderer.h"
+#include "tests/support/corridor_frame.h"
 
 namespace corridor {
 namespace {
 
 TEST(SharedHalvingTest, OneHalvingGivesWhatTwoGive) {
   const Camera camera = Camera::FromHorizontalFov(1280, 720, 85.0 * M_PI / 180, 0.7);
-  synth::SceneOptions scene;
-  scene.width = 2.2;
-  scene.ceiling_height = 2.8;
-  scene.seed = 5;
-  synth::Frame frame;
-  ASSERT_TRUE(synth::RenderFrame(synth::BuildScene(scene), camera,
-                                 synth::CameraPose{0.06, 0.04, 0.15, 0.7, 3.0}, &frame)
-                  .ok());
+  const synth::Frame frame = testing_util::RenderCorridorFrame(
+      camera, 2.2, 2.8, 5, synth::CameraPose{0.06, 0.04, 0.15, 0.7, 3.0});
+  ASSERT_FALSE(frame.bgr.empty());
   RecoverDepthOptions shared_options, twice_options;
   ASSERT_EQ(shared_options.search_max_width, shared_options.perception.max_work_width);
   twice_options.search_max_width = shared_options.search_max_width + 1;
