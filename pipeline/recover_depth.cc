@@ -260,6 +260,7 @@ Status DepthRecoverer::Detect(const cv::Mat& image, const Camera& camera,
   Status status = ToBgr(image, camera, &bgr);
   if (!status.ok()) return finish(status);
   result->image = bgr;
+  result->camera = camera;
   // When the junction search and the ceiling/end-wall searches halve large images to the same
   // width, one halving of the whole image serves both.
   if (options_.search_max_width == options_.perception.max_work_width &&

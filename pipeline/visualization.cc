@@ -1,8 +1,12 @@
 #include "pipeline/visualization.h"
 
+#include <cmath>
 #include <cstdio>
+#include <vector>
 
 #include <opencv2/imgproc.hpp>
+
+#include "core/corridor_frame.h"
 
 namespace corridor {
 namespace {
@@ -22,12 +26,52 @@ void DrawLine(cv::Mat* canvas, const JunctionLine& line, const Eigen::Vector2d& 
   cv::line(*canvas, ToPoint(line.near_end), ToPoint(far), color, 2, cv::LINE_AA);
 }
 
+// The floor/wall junctions (X_W = -d_l and d_r, Y_W = h) of the geometry, from 0.5 m to 60 m
+// along the corridor, as thin white polylines.
+void DrawGeometryJunctions(cv::Mat* canvas, const CorridorGeometry& g, const Camera& camera) {
+  if (!camera.CheckIntrinsics(nullptr) || camera.image_width != canvas->cols ||
+      camera.image_height != canvas->rows) {
+    return;
+  }
+  const CorridorRotation<double> r(g.pitch, g.yaw);
+  const bool distorted = camera.HasDistortion();
+  for (const double x : {-g.LeftDistance(), g.RightDistance()}) {
+    std::vector<cv::Point> points;
+    for (int i = 0; i <= 60; ++i) {
+      const double z = 1.0 / (2.0 + (1.0 / 60 - 2.0) * i / 60.0);  // Uniform in 1/Z.
+      const Vec3<double> c = r.ToCamera({x, g.camera_height, z});
+      if (c.z < 0.05) continue;
+      Eigen::Vector2d p = camera.Project({c.x, c.y, c.z});
+      if (distorted) p = camera.Distort(p);
+      if (!p.allFinite() || std::abs(p.x()) > 1e5 || std::abs(p.y()) > 1e5) continue;
+      points.push_back(ToPoint(p));
+    }
+    if (points.size() >= 2) {
+      cv::polylines(*canvas, points, false, cv::Scalar(255, 255, 255), 1, cv::LINE_8);
+    }
+  }
+}
+
 void PutCaption(cv::Mat* image, const std::string& text, int row) {
   const cv::Point origin(6, 16 + 16 * row);
   cv::putText(*image, text, origin, cv::FONT_HERSHEY_SIMPLEX, 0.42, cv::Scalar(0, 0, 0), 3,
               cv::LINE_AA);
   cv::putText(*image, text, origin, cv::FONT_HERSHEY_SIMPLEX, 0.42, cv::Scalar(255, 255, 255), 1,
               cv::LINE_AA);
+}
+
+// The text cut (with "...") to what PutCaption fits in `width` pixels.
+std::string FitCaption(const std::string& text, int width) {
+  const auto fits = [&](const std::string& t) {
+    int baseline = 0;
+    return cv::getTextSize(t, cv::FONT_HERSHEY_SIMPLEX, 0.42, 3, &baseline).width <= width - 12;
+  };
+  if (fits(text)) return text;
+  for (size_t n = text.size(); n > 0; --n) {
+    const std::string cut = text.substr(0, n - 1) + "...";
+    if (fits(cut)) return cut;
+  }
+  return "";
 }
 
 std::string Metres(double value) {
@@ -128,6 +172,10 @@ cv::Mat MakeResultPanel(const cv::Mat& bgr, const RecoverDepthResult& result, do
     if (g.HasCeiling()) extent += "ceiling " + Metres(g.ceiling_height) + "  ";
     if (g.HasEndWall()) extent += "end wall at " + Metres(g.end_distance);
     if (!extent.empty()) PutCaption(&lines, extent, 1);
+    if (!result.fallback.empty()) {
+      DrawGeometryJunctions(&lines, g, result.camera);
+      PutCaption(&lines, FitCaption(result.fallback, lines.cols), extent.empty() ? 1 : 2);
+    }
     std::snprintf(text, sizeof(text), "%.2f ms", result.times.total * 1e3);
     PutCaption(&depth_color, text, 0);
   } else {

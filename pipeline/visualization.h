@@ -19,7 +19,9 @@ cv::Mat DepthColorBar(int height, double max_depth);
 cv::Mat DrawJunctions(const cv::Mat& bgr, const JunctionPair& junctions);
 
 // The picture a person looks at: the input with the lines beside the coloured depth and its
-// colour bar, with a caption (status, geometry, time).
+// colour bar, with a caption (status, geometry, time). Where the geometry is not the detected
+// lines' alone (result.fallback: a wall moved, a width held, one junction and a known width), the
+// geometry's own floor/wall junctions are drawn too (thin white) and the note is a caption line.
 cv::Mat MakeResultPanel(const cv::Mat& bgr, const RecoverDepthResult& result, double max_depth);
 
 // Places images side by side (same height after scaling), with `gap` black pixels between.

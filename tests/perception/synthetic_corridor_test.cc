@@ -10,26 +10,10 @@
 #include "perception/junction_detector.h"
 #include "synth/corridor_renderer.h"
 #include "synth/presets.h"
+#include "tests/support/corridor_frame.h"
 
 namespace corridor {
 namespace {
-
-// The image of the junction (X, h, Z), Z in R, through two projected points, by hand
-// (P_C = R_x(pitch) R_y(yaw) P_W).
-Eigen::Vector3d TrueJunction(const CorridorGeometry& g, const Camera& c, int side) {
-  const double x = side < 0 ? -(g.width / 2 + g.offset) : g.width / 2 - g.offset;
-  Eigen::Vector3d points[2];
-  for (int i = 0; i < 2; ++i) {
-    const double z = i == 0 ? 3.0 : 12.0;
-    const double x1 = std::cos(g.yaw) * x + std::sin(g.yaw) * z;
-    const double z1 = -std::sin(g.yaw) * x + std::cos(g.yaw) * z;
-    const double yc = std::cos(g.pitch) * g.camera_height - std::sin(g.pitch) * z1;
-    const double zc = std::sin(g.pitch) * g.camera_height + std::cos(g.pitch) * z1;
-    points[i] = Eigen::Vector3d(c.fx * x1 / zc + c.cx, c.fy * yc / zc + c.cy, 1.0);
-  }
-  Eigen::Vector3d line = points[0].cross(points[1]);
-  return line / line.head<2>().norm();
-}
 
 // Easy scenes of the paper preset, first and last frame of each: most lines within 1.5 degrees
 // and 3 px of the truth at both ends of their support, none grossly off (measured: 21 of 24
@@ -46,7 +30,7 @@ TEST(SyntheticCorridorTest, DetectedJunctionsMatchTheTrueOnes) {
       ASSERT_TRUE(DetectJunctions(frame.bgr, JunctionDetectorOptions(), &pair).ok());
       ASSERT_TRUE(pair.status.ok()) << preset.name << " " << f << ": " << pair.status.ToString();
       for (int side = -1; side <= 1; side += 2) {
-        const Eigen::Vector3d truth = TrueJunction(frame.truth, preset.camera, side);
+        const Eigen::Vector3d truth = testing_util::TrueJunction(frame.truth, preset.camera, side);
         const JunctionLine& found = side < 0 ? pair.left : pair.right;
         const double angle_deg =
             std::acos(std::min(1.0, std::abs(truth.head<2>().dot(found.line.head<2>())))) * 180 /
@@ -87,7 +71,7 @@ TEST(SyntheticCorridorTest, WorkingResolutionKeepsTheLinesOfLargeImages) {
         ASSERT_TRUE(DetectJunctions(frame.bgr, k == 0 ? full : halved, &found).ok());
         if (!found.status.ok()) continue;
         for (int side = -1; side <= 1; side += 2) {
-          const Eigen::Vector3d truth = TrueJunction(frame.truth, camera, side);
+          const Eigen::Vector3d truth = testing_util::TrueJunction(frame.truth, camera, side);
           const JunctionLine& line = side < 0 ? found.left : found.right;
           const double angle_deg =
               std::acos(std::min(1.0, std::abs(truth.head<2>().dot(line.line.head<2>())))) *

@@ -1,10 +1,14 @@
 #pragma once
 
+#include <cmath>
 #include <cstdint>
+
+#include <Eigen/Geometry>
 
 #include <gtest/gtest.h>
 
 #include "core/camera.h"
+#include "core/corridor_geometry.h"
 #include "synth/corridor_renderer.h"
 
 namespace corridor {
@@ -24,6 +28,24 @@ inline synth::Frame RenderCorridorFrame(const Camera& camera, double width, doub
   synth::Frame frame;
   EXPECT_TRUE(synth::RenderFrame(synth::BuildScene(scene), camera, pose, &frame).ok());
   return frame;
+}
+
+// The image line of the floor/wall junction (X, h, Z), Z in R (side < 0: left), through two
+// points projected by hand
+// (P_C = R_x(pitch) R_y(yaw) P_W), normalised (a^2 + b^2 = 1).
+inline Eigen::Vector3d TrueJunction(const CorridorGeometry& g, const Camera& c, int side) {
+  const double x = side < 0 ? -(g.width / 2 + g.offset) : g.width / 2 - g.offset;
+  Eigen::Vector3d points[2];
+  for (int i = 0; i < 2; ++i) {
+    const double z = i == 0 ? 3.0 : 12.0;
+    const double x1 = std::cos(g.yaw) * x + std::sin(g.yaw) * z;
+    const double z1 = -std::sin(g.yaw) * x + std::cos(g.yaw) * z;
+    const double yc = std::cos(g.pitch) * g.camera_height - std::sin(g.pitch) * z1;
+    const double zc = std::sin(g.pitch) * g.camera_height + std::cos(g.pitch) * z1;
+    points[i] = Eigen::Vector3d(c.fx * x1 / zc + c.cx, c.fy * yc / zc + c.cy, 1.0);
+  }
+  Eigen::Vector3d line = points[0].cross(points[1]);
+  return line / line.head<2>().norm();
 }
 
 }  // namespace testing_util
