@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "core/corridor_frame.h"
+#include "core/cpu_features.h"
 
 namespace corridor {
 namespace {
@@ -118,7 +119,7 @@ void Row(const BoxModel& box, const RowConstants& row, int width, float* out) {
   RowBody<kEndWall, kCutWalls>(box, row, width, out);
 }
 
-#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
+#ifdef CORRIDOR_AVX2_VARIANTS
 // The same loop compiled for AVX2 (8 floats a step; no FMA, so that every product is rounded
 // as in the baseline loop).
 template <bool kEndWall, bool kCutWalls>
@@ -126,13 +127,11 @@ __attribute__((target("avx2"))) void RowAvx2(const BoxModel& box, const RowConst
                                              int width, float* out) {
   RowBody<kEndWall, kCutWalls>(box, row, width, out);
 }
-#define CORRIDOR_HAVE_AVX2_ROWS 1
 #endif
 
 RowKernel ChooseRowKernel(bool end_wall, bool cut_walls, bool allow_avx2) {
-#ifdef CORRIDOR_HAVE_AVX2_ROWS
-  static const bool avx2 = __builtin_cpu_supports("avx2");
-  if (avx2 && allow_avx2) {
+#ifdef CORRIDOR_AVX2_VARIANTS
+  if (allow_avx2 && CpuHasAvx2()) {
     if (end_wall) return cut_walls ? RowAvx2<true, true> : RowAvx2<true, false>;
     return cut_walls ? RowAvx2<false, true> : RowAvx2<false, false>;
   }

@@ -5,11 +5,12 @@
 #include <vector>
 
 #include <opencv2/imgproc.hpp>
-#if defined(__GNUC__) && defined(__x86_64__)
-#include <immintrin.h>
-#endif
 
 #include "core/corridor_frame.h"
+#include "core/cpu_features.h"
+#ifdef CORRIDOR_AVX2_VARIANTS
+#include <immintrin.h>
+#endif
 #include "perception/corridor_projection.h"
 #include "perception/oriented_edges.h"
 
@@ -37,7 +38,7 @@ struct SearchLines {
 using RowProjector = int (*)(const Camera&, const CorridorRotation<double>&, double, double,
                              const double*, int, cv::Point*);
 
-#if defined(__GNUC__) && defined(__x86_64__)
+#ifdef CORRIDOR_AVX2_VARIANTS
 __attribute__((target("avx2"))) int ProjectRowAvx2(const Camera& camera,
                                                    const CorridorRotation<double>& r, double x,
                                                    double y, const double* z, int n,
@@ -88,9 +89,8 @@ __attribute__((target("avx2"))) int ProjectRowAvx2(const Camera& camera,
 // The four-at-a-time projector for this CPU and camera, or null (every point alone).
 RowProjector ChooseRowProjector(bool distorted) {
   if (distorted) return nullptr;
-#if defined(__GNUC__) && defined(__x86_64__)
-  static const bool avx2 = __builtin_cpu_supports("avx2");
-  if (avx2) return ProjectRowAvx2;
+#ifdef CORRIDOR_AVX2_VARIANTS
+  if (CpuHasAvx2()) return ProjectRowAvx2;
 #endif
   return nullptr;
 }

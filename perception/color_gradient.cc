@@ -5,6 +5,8 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "core/cpu_features.h"
+
 namespace corridor {
 namespace {
 
@@ -61,7 +63,7 @@ void SobelRow(const uchar* above, const uchar* centre, const uchar* below, int c
   SobelRowBody<kFirst>(above, centre, below, cols, s, t, bx, by, best);
 }
 
-#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
+#ifdef CORRIDOR_AVX2_VARIANTS
 // The same rows compiled for AVX2 (16 shorts a step): integer arithmetic, the same results.
 template <bool kFirst>
 __attribute__((target("avx2"))) void SobelRowAvx2(const uchar* above, const uchar* centre,
@@ -69,14 +71,12 @@ __attribute__((target("avx2"))) void SobelRowAvx2(const uchar* above, const ucha
                                                   short* t, short* bx, short* by, short* best) {
   SobelRowBody<kFirst>(above, centre, below, cols, s, t, bx, by, best);
 }
-#define CORRIDOR_HAVE_AVX2_SOBEL 1
 #endif
 
 // The row functions for the first channel and the others: AVX2 where the CPU has it.
 void ChooseSobelRows(SobelRowFn* first, SobelRowFn* others) {
-#ifdef CORRIDOR_HAVE_AVX2_SOBEL
-  static const bool avx2 = __builtin_cpu_supports("avx2");
-  if (avx2) {
+#ifdef CORRIDOR_AVX2_VARIANTS
+  if (CpuHasAvx2()) {
     *first = SobelRowAvx2<true>;
     *others = SobelRowAvx2<false>;
     return;

@@ -6,13 +6,15 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "core/cpu_features.h"
+
 namespace corridor {
 namespace {
 
 // cv::BORDER_REFLECT_101 index of i in [0, n) for |i| < n (n >= 3 here).
 int Reflect101(int i, int n) { return i < 0 ? -i : (i >= n ? 2 * n - 2 - i : i); }
 
-#if defined(__GNUC__) && defined(__x86_64__)
+#ifdef CORRIDOR_AVX2_VARIANTS
 // The 5x5 kernel [1 4 6 4 1]^2 / 256 of cv::pyrDown, at every second row and column, in 16-bit
 // integers (at most 256 * 255 + 128 < 2^16): first down the five rows into `vertical`, then
 // along it at every pixel, then every second pixel kept. Integer sums in any order are the same,
@@ -66,9 +68,8 @@ __attribute__((target("avx2"))) void PyrDownAvx2(const cv::Mat& src, cv::Mat* ds
 }  // namespace
 
 void PyrDown(const cv::Mat& image, cv::Mat* halved) {
-#if defined(__GNUC__) && defined(__x86_64__)
-  static const bool avx2 = __builtin_cpu_supports("avx2");
-  if (avx2 && image.depth() == CV_8U && image.cols >= 3 && image.rows >= 3) {
+#ifdef CORRIDOR_AVX2_VARIANTS
+  if (CpuHasAvx2() && image.depth() == CV_8U && image.cols >= 3 && image.rows >= 3) {
     switch (image.channels()) {
       case 1: return PyrDownAvx2<1>(image, halved);
       case 3: return PyrDownAvx2<3>(image, halved);

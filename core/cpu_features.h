@@ -1,0 +1,16 @@
+#pragma once
+
+// Hot loops (the exact rasteriser's rows, the colour Sobel, the halving, the ceiling search's
+// projections) are compiled twice where the compiler can target AVX2 per function: once for the
+// baseline, once with __attribute__((target("avx2"))), each variant doing the same operations
+// (no FMA) so that both give the same results. The AVX2 one runs where the CPU has it.
+#if defined(__GNUC__) && defined(__x86_64__)
+#define CORRIDOR_AVX2_VARIANTS 1
+#endif
+
+namespace corridor {
+
+// True when AVX2 variants are compiled in and the CPU runs them (checked once).
+bool CpuHasAvx2();
+
+}  // namespace corridor
