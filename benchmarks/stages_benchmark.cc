@@ -110,9 +110,7 @@ void InnerLine(benchmark::State& state, int width, int height) {
   const bench::BenchFrame& input = bench::PaperLikeFrame(width, height);
   const CorridorGeometry& truth = input.frame.truth;
   CorridorGeometry near = truth;
-  const double right = 0.6 * truth.RightDistance();
-  near.width = truth.LeftDistance() + right;
-  near.offset = 0.5 * (truth.LeftDistance() - right);
+  near.SetWallDistances(truth.LeftDistance(), 0.6 * truth.RightDistance());
   const CeilingDetectorOptions ceiling;
   const InnerLineCheckOptions options;
   CorridorGeometry moved;

@@ -16,6 +16,11 @@ struct CorridorGeometry {
 
   double LeftDistance() const { return 0.5 * width + offset; }   // d_l
   double RightDistance() const { return 0.5 * width - offset; }  // d_r
+  // Sets width and offset from the distances to the walls: w = d_l + d_r, tau = (d_l - d_r) / 2.
+  void SetWallDistances(double left, double right) {
+    width = left + right;
+    offset = 0.5 * (left - right);
+  }
   bool HasCeiling() const { return ceiling_height > camera_height; }
   bool HasEndWall() const { return end_distance > 0; }
   std::string ToString() const;

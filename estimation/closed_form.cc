@@ -96,8 +96,7 @@ Status SolveClosedForm(const CorridorObservation& observation, CorridorGeometry*
   }
   geometry->yaw = yaw;
   geometry->pitch = pitch;
-  geometry->width = d_left + d_right;
-  geometry->offset = 0.5 * (d_left - d_right);
+  geometry->SetWallDistances(d_left, d_right);
   geometry->camera_height = observation.camera_height;
   return Status::Ok();
 }

@@ -48,8 +48,7 @@ InnerLineCheck CheckInnerLine(const cv::Mat& bgr, const Camera& camera,
   }
   double distance[2] = {geometry->LeftDistance(), geometry->RightDistance()};
   distance[inner] *= factor;
-  geometry->width = distance[0] + distance[1];
-  geometry->offset = 0.5 * (distance[0] - distance[1]);
+  geometry->SetWallDistances(distance[0], distance[1]);
   check.moved = true;
   check.side = inner;
   check.factor = factor;

@@ -33,8 +33,7 @@ TEST(InnerLineCheckTest, AWallPutTooNearIsMovedBackOut) {
       double distance[2] = {truth.LeftDistance(), truth.RightDistance()};
       distance[side] *= shrink;
       CorridorGeometry g = truth;
-      g.width = distance[0] + distance[1];
-      g.offset = 0.5 * (distance[0] - distance[1]);
+      g.SetWallDistances(distance[0], distance[1]);
       const InnerLineCheck check =
           CheckInnerLine(frame.bgr, camera, CeilingDetectorOptions(), InnerLineCheckOptions(), &g);
       ASSERT_TRUE(check.moved) << side << " " << shrink;
