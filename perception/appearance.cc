@@ -4,6 +4,7 @@
 #include <cmath>
 #include <vector>
 
+#include <Eigen/Geometry>
 #include <opencv2/imgproc.hpp>
 
 namespace corridor {
@@ -14,6 +15,20 @@ float Median(std::vector<float>* values) {
   auto mid = values->begin() + values->size() / 2;
   std::nth_element(values->begin(), mid, values->end());
   return *mid;
+}
+
+// The mean colour of the 3x3 pixels around image point p (full-image coordinates; `bgr` holds
+// the rows from roi_top). False when they are not all inside.
+bool Mean3x3(const cv::Mat& bgr, const Eigen::Vector2d& p, int roi_top, cv::Vec3b* mean) {
+  const int u = cvRound(p.x()), v = cvRound(p.y()) - roi_top;
+  if (u < 1 || v < 1 || u >= bgr.cols - 1 || v >= bgr.rows - 1) return false;
+  cv::Vec3i sum(0, 0, 0);
+  for (int dv = -1; dv <= 1; ++dv) {
+    for (int du = -1; du <= 1; ++du) sum += cv::Vec3i(bgr.at<cv::Vec3b>(v + dv, u + du));
+  }
+  *mean = cv::Vec3b(static_cast<uchar>(sum[0] / 9), static_cast<uchar>(sum[1] / 9),
+                    static_cast<uchar>(sum[2] / 9));
+  return true;
 }
 
 }  // namespace
@@ -109,6 +124,38 @@ double BoundaryScore(const cv::Mat& bgr, const FloorAppearance& floor, const Mer
     sum += likeness(cb / 9.0f) * (1.0 - likeness(ca / 9.0f));
   }
   return count > 0 ? sum / count : 0.0;
+}
+
+double BandContrast(const cv::Mat& bgr, const FloorAppearance& floor, const MergedLine& upper,
+                    const MergedLine& lower, int roi_top) {
+  const double u0 = std::max(upper.start.x(), lower.start.x());
+  const double u1 = std::min(upper.end.x(), lower.end.x());
+  if (u1 <= u0 || std::abs(lower.line.y()) < 1e-6) return -1.0;
+  const Eigen::Vector2d down = lower.line.head<2>();  // Unit normal toward the floor.
+  const int samples = 24;
+  std::vector<cv::Vec3b> pairs;  // Per usable sample: the band's middle, then the floor below.
+  for (int i = 0; i < samples; ++i) {
+    const double u = u0 + (u1 - u0) * (i + 0.5) / samples;
+    // The lower line's point at column u (b > 0: the line is not vertical).
+    const Eigen::Vector2d p(u, -(lower.line.x() * u + lower.line.z()) / lower.line.y());
+    const double gap = upper.line.dot(p.homogeneous());  // > 0: p lies below `upper`.
+    if (gap < 4.0) continue;
+    cv::Vec3b middle, below;
+    if (!Mean3x3(bgr, p - 0.5 * gap * down, roi_top, &middle) ||
+        !Mean3x3(bgr, p + 3.0 * down, roi_top, &below)) {
+      continue;
+    }
+    pairs.push_back(middle);
+    pairs.push_back(below);
+  }
+  if (pairs.size() < 12) return -1.0;
+  const std::vector<cv::Vec3b> lab = BgrToLab(pairs);
+  std::vector<float> distances;
+  distances.reserve(lab.size() / 2);
+  for (size_t k = 0; k + 1 < lab.size(); k += 2) {
+    distances.push_back(LabDistance(cv::Vec3f(lab[k]), cv::Vec3f(lab[k + 1])));
+  }
+  return Median(&distances) / floor.spread;
 }
 
 }  // namespace corridor

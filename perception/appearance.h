@@ -35,4 +35,14 @@ FloorAppearance SampleFloor(const cv::Mat& bgr, int roi_top, int step = 2);
 double BoundaryScore(const cv::Mat& bgr, const FloorAppearance& floor, const MergedLine& line,
                      int roi_top);
 
+// How unlike the floor just below `lower` the band between `upper` and `lower` looks: two lines
+// through one vanishing point on the same side, `upper` above (on the wall side of) `lower`. The
+// median, over samples along their common extent where the band is at least 4 px tall, of the Lab
+// distance between the band's middle and the floor 3 px below `lower` (3x3 means), over the
+// floor's spread. Large for a baseboard (its top above, the junction below); small for a tile
+// between a junction and a grout line. -1 when fewer than 6 samples are usable. `bgr` as for
+// SampleFloor.
+double BandContrast(const cv::Mat& bgr, const FloorAppearance& floor, const MergedLine& upper,
+                    const MergedLine& lower, int roi_top);
+
 }  // namespace corridor

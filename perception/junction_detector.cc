@@ -257,6 +257,8 @@ bool JunctionDetectorOptions::Check(std::string* why) const {
     reason = "inclination bounds must lie in [0, 90] degrees";
   } else if (!(support_distance_px > 0)) {
     reason = "support_distance_px must be positive";
+  } else if (!(baseboard_band_contrast >= 0 && baseboard_band_contrast <= 1e6)) {
+    reason = "baseboard_band_contrast must be >= 0 (0 = off)";
   } else if (!(max_edge_density > 0 && max_edge_density <= 1)) {
     reason = "max_edge_density must be in (0, 1]";
   } else if (!(max_floor_texture >= 0 && max_floor_texture <= 1) || strong_edge_gradient < 1 ||
@@ -406,7 +408,15 @@ Status DetectJunctionsIn(const cv::Mat& bgr, const cv::Mat* halved,
     }
     return status;
   }
-  const SelectedPair pair = SelectJunctionPair(left, right, lines, Eigen::Vector2d(width, height));
+  BaseboardBandTest band;
+  if (options.baseboard_band_contrast > 0) {
+    band.min_contrast = options.baseboard_band_contrast;
+    band.contrast = [&](const MergedLine& upper, const MergedLine& lower) {
+      return BandContrast(roi, floor, upper, lower, roi_top);
+    };
+  }
+  const SelectedPair pair =
+      SelectJunctionPair(left, right, lines, Eigen::Vector2d(width, height), band);
   if (pair.left < 0) {
     return NoCorridor(result, "no pair of lines meets at a vanishing point above the floor");
   }

@@ -69,11 +69,21 @@ int LowerLine(const std::vector<JunctionCandidate>& side, int chosen, const Eige
 }
 
 // When the chosen line has a partner below it that looks at least nearly as much like the floor's
-// boundary, the partner is the junction (the chosen line is the baseboard's top). Otherwise the
-// partner with at least half the score is kept as the side's alternative.
+// boundary, or with a band between them unlike the floor below, the partner is the junction (the
+// chosen line is the baseboard's top). Otherwise the partner with at least half the score is kept
+// as the side's alternative.
 void ApplyBaseboardRule(const std::vector<JunctionCandidate>& side, const Eigen::Vector2d& vp,
-                        bool left, int* chosen, int* lower) {
-  const int partner = LowerLine(side, *chosen, vp, left, 0.8);
+                        bool left, const BaseboardBandTest& band, int* chosen, int* lower) {
+  int partner = LowerLine(side, *chosen, vp, left, 0.8);
+  if (partner < 0 && band.contrast) {
+    // A baseboard as dark as the floor has a weak lower edge (and so a low boundary score), but
+    // the band between its edges is unlike the floor; between a junction and a grout line, or
+    // a glossy floor's faint reflection of the baseboard, the band is floor.
+    const int weak = LowerLine(side, *chosen, vp, left, band.min_boundary_ratio);
+    if (weak >= 0 && band.contrast(side[*chosen].line, side[weak].line) >= band.min_contrast) {
+      partner = weak;
+    }
+  }
   if (partner >= 0) {
     *chosen = partner;
     return;
@@ -86,7 +96,8 @@ void ApplyBaseboardRule(const std::vector<JunctionCandidate>& side, const Eigen:
 SelectedPair SelectJunctionPair(const std::vector<JunctionCandidate>& left,
                                 const std::vector<JunctionCandidate>& right,
                                 const std::vector<MergedLine>& all_lines,
-                                const Eigen::Vector2d& size) {
+                                const Eigen::Vector2d& size,
+                                const BaseboardBandTest& band) {
   SelectedPair best;
   const double width = size.x(), height = size.y(), diagonal = size.norm();
   for (size_t i = 0; i < left.size(); ++i) {
@@ -125,8 +136,8 @@ SelectedPair SelectJunctionPair(const std::vector<JunctionCandidate>& left,
     }
   }
   if (best.left >= 0) {
-    ApplyBaseboardRule(left, best.vanishing_point, true, &best.left, &best.left_lower);
-    ApplyBaseboardRule(right, best.vanishing_point, false, &best.right, &best.right_lower);
+    ApplyBaseboardRule(left, best.vanishing_point, true, band, &best.left, &best.left_lower);
+    ApplyBaseboardRule(right, best.vanishing_point, false, band, &best.right, &best.right_lower);
   }
   return best;
 }

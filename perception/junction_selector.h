@@ -1,5 +1,6 @@
 #pragma once
 
+#include <functional>
 #include <vector>
 
 #include <Eigen/Core>
@@ -25,13 +26,26 @@ struct SelectedPair {
   int left_lower = -1, right_lower = -1;
 };
 
+// The baseboard rule's second test: the band between a side's chosen line and a lower partner.
+struct BaseboardBandTest {
+  // How unlike the floor below it the band between `upper` and `lower` looks (BandContrast);
+  // empty: no band test.
+  std::function<double(const MergedLine& upper, const MergedLine& lower)> contrast;
+  double min_contrast = 1.45;        // At least this: the band is a baseboard, the partner the junction.
+  double min_boundary_ratio = 0.3;   // Partners with less of the chosen line's boundary score are not tried.
+};
+
 // Scores every (left, right) pair: both lines' support lengths and boundary scores, plus the
 // agreement of the other lines with the pair's vanishing point. A pair must meet above both
 // supports, with the left support left of the vanishing point and the right support right of it.
 // `all_lines` are every merged line (for the vanishing-point vote); `size` is (width, height).
+// Then, per side, the baseboard rule: a lower partner of the chosen line becomes the junction when
+// its boundary score nearly matches the chosen line's, or when `band` finds the band between them
+// unlike the floor (a baseboard whose lower edge has little contrast with the floor).
 SelectedPair SelectJunctionPair(const std::vector<JunctionCandidate>& left,
                                 const std::vector<JunctionCandidate>& right,
                                 const std::vector<MergedLine>& all_lines,
-                                const Eigen::Vector2d& size);
+                                const Eigen::Vector2d& size,
+                                const BaseboardBandTest& band = BaseboardBandTest());
 
 }  // namespace corridor

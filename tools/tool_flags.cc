@@ -36,6 +36,14 @@ DEFINE_bool(inner_line_check, true,
 DEFINE_int32(search_max_width, 640,
              "Wider images are halved before the ceiling and end-wall searches until they fit, px "
              "(0 = full resolution)");
+DEFINE_int32(junction_max_width, 640,
+             "Wider images are halved before the junction-line search until they fit, px "
+             "(0 = full resolution); equal to search_max_width, both searches share one halving");
+DEFINE_double(baseboard_band_contrast, 1.45,
+              "A line just below the chosen junction, parallel to it, is the junction instead (the "
+              "chosen one a baseboard top) when the band between them is this unlike the floor "
+              "below, in floor-texture spreads; raise it for glossy floors that mirror the "
+              "baseboard; 0 = off");
 DEFINE_int32(points_per_line, 30, "Points sampled along each junction line for the solver");
 DEFINE_double(roi_top, 0.5, "Junction search region starts at this fraction of the image height");
 DEFINE_double(hough_angle_window, 15.0,
@@ -62,6 +70,8 @@ Status RecoverDepthOptionsFromFlags(RecoverDepthOptions* options) {
   options->max_width_change = FLAGS_max_width_change;
   options->points_per_line = FLAGS_points_per_line;
   options->search_max_width = FLAGS_search_max_width;
+  options->perception.max_work_width = FLAGS_junction_max_width;
+  options->perception.baseboard_band_contrast = FLAGS_baseboard_band_contrast;
   options->perception.roi_top_fraction = FLAGS_roi_top;
   options->perception.max_floor_texture = FLAGS_max_floor_texture;
   options->perception.hough_angle_window_deg = FLAGS_hough_angle_window;

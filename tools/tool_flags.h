@@ -26,6 +26,8 @@ DECLARE_double(width_prior);
 DECLARE_double(max_width_change);
 DECLARE_int32(points_per_line);
 DECLARE_int32(search_max_width);
+DECLARE_int32(junction_max_width);
+DECLARE_double(baseboard_band_contrast);
 DECLARE_double(roi_top);
 DECLARE_double(max_floor_texture);
 DECLARE_double(hough_angle_window);

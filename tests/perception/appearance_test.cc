@@ -1,6 +1,8 @@
 // The floor-boundary cues: Lab of sampled pixels against OpenCV's whole-image conversion, and the
-// boundary score on a painted floor/wall image.
+// boundary score and the band contrast on painted floor/wall images.
 #include "perception/appearance.h"
+
+#include <cmath>
 
 #include <gtest/gtest.h>
 #include <opencv2/imgproc.hpp>
@@ -66,6 +68,43 @@ TEST(AppearanceTest, AVerticalBoundaryComparesItsLeftAndRightSides) {
   EXPECT_GT(BoundaryScore(image, floor, boundary, 0), 0.95);
   const MergedLine inside = LineThrough(Eigen::Vector2d(150, 10), Eigen::Vector2d(150, 150));
   EXPECT_LT(BoundaryScore(image, floor, inside, 0), 0.05);
+}
+
+// 8-bit Lab of one BGR colour, by OpenCV's whole-image conversion.
+cv::Vec3f LabOf(const cv::Scalar& bgr) {
+  cv::Mat one(1, 1, CV_8UC3, bgr), lab;
+  cv::cvtColor(one, lab, cv::COLOR_BGR2Lab);
+  return lab.at<cv::Vec3b>(0, 0);
+}
+
+// A wall above row 60, a 12-row band (rows 60-71), a floor below: the band contrast of the band's
+// two edges is the Lab distance of the band's colour from the floor's, lightness weighted a quarter
+// (appearance.h), over the floor's spread (1 on a uniform floor).
+TEST(AppearanceTest, TheBandBetweenTwoLinesIsComparedWithTheFloorBelowIt) {
+  const cv::Scalar wall(200, 200, 200), floor_bgr(40, 90, 150);
+  const auto contrast_of = [&](const cv::Scalar& band, double upper_v, double lower_v) {
+    cv::Mat image(160, 200, CV_8UC3, wall);
+    image.rowRange(60, 72).setTo(band);
+    image.rowRange(72, 160).setTo(floor_bgr);
+    const int roi_top = 40;
+    const cv::Mat roi = image.rowRange(roi_top, image.rows);
+    const FloorAppearance floor = SampleFloor(roi, roi_top);
+    EXPECT_EQ(floor.spread, 1.0f);
+    const MergedLine upper = LineThrough(Eigen::Vector2d(10, upper_v), Eigen::Vector2d(190, upper_v));
+    const MergedLine lower = LineThrough(Eigen::Vector2d(20, lower_v), Eigen::Vector2d(180, lower_v));
+    return BandContrast(roi, floor, upper, lower, roi_top);
+  };
+  const cv::Scalar baseboard(90, 90, 90);
+  const cv::Vec3f d = LabOf(baseboard) - LabOf(floor_bgr);
+  const double expected = std::sqrt(0.25 * (100.0 / 255) * (100.0 / 255) * d[0] * d[0] +
+                                    d[1] * d[1] + d[2] * d[2]);
+  ASSERT_GT(expected, 20.0);
+  EXPECT_NEAR(contrast_of(baseboard, 59.5, 71.5), expected, 0.01 * expected);
+  // The same band painted floor (a grout line below the junction): no contrast.
+  EXPECT_NEAR(contrast_of(floor_bgr, 59.5, 71.5), 0.0, 1e-6);
+  // Lines closer than 4 px, or lower not below upper: no band to measure.
+  EXPECT_EQ(contrast_of(baseboard, 68.5, 71.5), -1.0);
+  EXPECT_EQ(contrast_of(baseboard, 71.5, 59.5), -1.0);
 }
 
 }  // namespace
