@@ -6,17 +6,10 @@
 #include <opencv2/imgproc.hpp>
 
 #include "core/cpu_features.h"
+#include "perception/image_border.h"
 
 namespace corridor {
 namespace {
-
-// cv::BORDER_REFLECT_101 index of i in [0, n), as cv::borderInterpolate.
-int Reflect101(int i, int n) {
-  if (n == 1) return 0;
-  if (i < 0) return -i;
-  if (i >= n) return 2 * n - 2 - i;
-  return i;
-}
 
 // Sobel of one 8-bit row triple (above, centre, below): gx = s[u+1] - s[u-1] with
 // s = above + 2 centre + below, gy = t[u-1] + 2 t[u] + t[u+1] with t = below - above. `s` and `t`

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include <opencv2/imgproc.hpp>
+#include "perception/binomial_blur.h"
 
 #include "perception/color_gradient.h"
 
@@ -31,7 +32,7 @@ OrientedEdges ComputeOrientedEdges(const cv::Mat& bgr, int top, int bottom) {
   if (bottom <= top) return out;
   const int from = std::max(0, top - kBandMargin), to = std::min(bgr.rows, bottom + kBandMargin);
   cv::Mat smooth, dx, dy, edges;
-  cv::GaussianBlur(bgr.rowRange(from, to), smooth, cv::Size(0, 0), 1.0);
+  if (!BinomialBlur(bgr, from, to, 5, &smooth).ok()) return out;  // Not 8-bit: no edges.
   ColorGradient(smooth, &dx, &dy, nullptr);
   cv::Canny(dx, dy, edges, 20, 60, true);
   const cv::Rect band(0, top - from, bgr.cols, bottom - top);

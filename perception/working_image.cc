@@ -7,12 +7,11 @@
 #include <opencv2/imgproc.hpp>
 
 #include "core/cpu_features.h"
+#include "perception/binomial_rows.h"
+#include "perception/image_border.h"
 
 namespace corridor {
 namespace {
-
-// cv::BORDER_REFLECT_101 index of i in [0, n) for |i| < n (n >= 3 here).
-int Reflect101(int i, int n) { return i < 0 ? -i : (i >= n ? 2 * n - 2 - i : i); }
 
 #ifdef CORRIDOR_AVX2_VARIANTS
 // The 5x5 kernel [1 4 6 4 1]^2 / 256 of cv::pyrDown, at every second row and column, in 16-bit
@@ -37,21 +36,9 @@ __attribute__((target("avx2"))) void PyrDownAvx2(const cv::Mat& src, cv::Mat* ds
     const uint8_t* r2 = src.ptr<uint8_t>(2 * y);
     const uint8_t* r3 = src.ptr<uint8_t>(Reflect101(2 * y + 1, height));
     const uint8_t* r4 = src.ptr<uint8_t>(Reflect101(2 * y + 2, height));
-    for (int i = 0; i < n; ++i) {
-      v[i] = static_cast<uint16_t>(r0[i] + r4[i] + 4 * (r1[i] + r3[i]) + 6 * r2[i]);
-    }
-    for (int c = 0; c < C; ++c) {
-      v[-2 * C + c] = v[2 * C + c];
-      v[-C + c] = v[C + c];
-      v[width * C + c] = v[(width - 2) * C + c];
-      v[(width + 1) * C + c] = v[(width - 3) * C + c];
-    }
-    for (int i = 0; i < n; ++i) {
-      h[i] = static_cast<uint8_t>(
-          static_cast<uint16_t>(v[i - 2 * C] + v[i + 2 * C] + 4 * (v[i - C] + v[i + C]) +
-                                6 * v[i] + 128) >>
-          8);
-    }
+    binomial::ColumnSums5(r0, r1, r2, r3, r4, n, v);
+    binomial::ReflectEnds<C>(v, width, 2);
+    binomial::RowSums5<C>(v, n, h);
     uint8_t* d = out.ptr<uint8_t>(y);
     int x = 0;
     if (C == 3) {  // Four bytes at a time, the fourth overwritten by the next pixel.
