@@ -8,6 +8,14 @@
 #define CORRIDOR_AVX2_VARIANTS 1
 #endif
 
+// For a loop body shared by both variants that the compiler might not inline by itself (an
+// out-of-line body is compiled for the baseline only, and its AVX2 variant would not be one).
+#if defined(__GNUC__)
+#define CORRIDOR_ALWAYS_INLINE __attribute__((always_inline))
+#else
+#define CORRIDOR_ALWAYS_INLINE
+#endif
+
 namespace corridor {
 
 // True when AVX2 variants are compiled in and the CPU runs them (checked once).
