@@ -17,14 +17,6 @@
 namespace corridor {
 namespace {
 
-synth::ScenePreset Scene(const std::string& name) {
-  for (const auto& preset : synth::PaperPreset()) {
-    if (preset.name == name) return preset;
-  }
-  ADD_FAILURE() << "no " << name << " in the paper preset";
-  return synth::ScenePreset();
-}
-
 // Largest distance, px, of the found left junction's support ends from the true line.
 double LeftOffsetPx(const synth::ScenePreset& preset, const synth::Frame& frame,
                     const JunctionDetectorOptions& options) {
@@ -41,7 +33,7 @@ struct Offsets {
 };
 
 Offsets LeftOffsets(const std::string& scene, size_t pose) {
-  const synth::ScenePreset preset = Scene(scene);
+  const synth::ScenePreset preset = testing_util::PaperScene(scene);
   synth::Frame frame;
   EXPECT_TRUE(synth::RenderFrame(synth::BuildScene(preset.scene), preset.camera,
                                  preset.poses.at(pose), &frame)
@@ -65,7 +57,7 @@ TEST(BaseboardBandTest, ALowContrastBaseboardsLowerEdgeIsTaken) {
 
 TEST(BaseboardBandTest, AFloorLineBelowTheJunctionIsNotTaken) {
   for (size_t pose : {5, 6, 12, 14}) {
-    const synth::ScenePreset preset = Scene("Cord_E06");
+    const synth::ScenePreset preset = testing_util::PaperScene("Cord_E06");
     synth::Frame frame;
     ASSERT_TRUE(synth::RenderFrame(synth::BuildScene(preset.scene), preset.camera,
                                    preset.poses.at(pose), &frame)

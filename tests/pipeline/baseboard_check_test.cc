@@ -12,17 +12,10 @@
 #include "pipeline/recover_depth.h"
 #include "synth/corridor_renderer.h"
 #include "synth/presets.h"
+#include "tests/support/corridor_frame.h"
 
 namespace corridor {
 namespace {
-
-synth::ScenePreset Scene(const std::string& name) {
-  for (const auto& preset : synth::PaperPreset()) {
-    if (preset.name == name) return preset;
-  }
-  ADD_FAILURE() << "no " << name << " in the paper preset";
-  return synth::ScenePreset();
-}
 
 // Frame `pose` of a paper-preset scene, `further` m further along the corridor (empty when it
 // cannot be rendered).
@@ -43,7 +36,7 @@ struct BothRuns {
 };
 
 void RecoverBoth(const std::string& scene, size_t pose, double further, BothRuns* runs) {
-  runs->preset = Scene(scene);
+  runs->preset = testing_util::PaperScene(scene);
   runs->frame = RenderPose(runs->preset, pose, further);
   ASSERT_FALSE(runs->frame.bgr.empty());
   RecoverDepthOptions on;
@@ -104,7 +97,7 @@ TEST(BaseboardCheckTest, ALowerLineThatMakesTheCeilingAgreeIsTakenWhenNoneWasCom
 // Where both ceiling junctions already agree (a frame of the same corridor with both junctions
 // right), nothing changes.
 TEST(BaseboardCheckTest, AgreeingCeilingJunctionsChangeNothing) {
-  const synth::ScenePreset preset = Scene("Cord_E01");
+  const synth::ScenePreset preset = testing_util::PaperScene("Cord_E01");
   const synth::Frame frame = RenderPose(preset, 6);
   ASSERT_FALSE(frame.bgr.empty());
   RecoverDepthOptions off;

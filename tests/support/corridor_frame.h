@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <string>
 
 #include <Eigen/Geometry>
 
@@ -10,6 +11,7 @@
 #include "core/camera.h"
 #include "core/corridor_geometry.h"
 #include "synth/corridor_renderer.h"
+#include "synth/presets.h"
 
 namespace corridor {
 namespace testing_util {
@@ -28,6 +30,15 @@ inline synth::Frame RenderCorridorFrame(const Camera& camera, double width, doub
   synth::Frame frame;
   EXPECT_TRUE(synth::RenderFrame(synth::BuildScene(scene), camera, pose, &frame).ok());
   return frame;
+}
+
+// The paper preset's scene `name` (a test failure, and an empty preset, when there is none).
+inline synth::ScenePreset PaperScene(const std::string& name) {
+  for (const auto& preset : synth::PaperPreset()) {
+    if (preset.name == name) return preset;
+  }
+  ADD_FAILURE() << "no " << name << " in the paper preset";
+  return synth::ScenePreset();
 }
 
 // The image line of the floor/wall junction (X, h, Z), Z in R (side < 0: left), through two
