@@ -78,10 +78,10 @@ Status BinomialBlur(const cv::Mat& image, int from, int to, int taps, cv::Mat* o
     case 3: blur = ChooseBlur<3>(taps); break;
     default: blur = ChooseBlur<4>(taps); break;
   }
-  // A new matrix when `out` shares the image's pixels (rows are read after others are written);
-  // `source` keeps them (`image` may be *out itself).
+  // A new matrix when `out` shares the image's pixels, even as another view of them (rows are read
+  // after others are written); `source` keeps them (`image` may be *out itself).
   const cv::Mat source = image;
-  if (out->data == source.data) *out = cv::Mat();
+  if (out->datastart == source.datastart) *out = cv::Mat();
   out->create(to - from, source.cols, source.type());
   blur(source, from, to, out);
   return Status::Ok();

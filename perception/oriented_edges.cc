@@ -4,8 +4,8 @@
 #include <cmath>
 
 #include <opencv2/imgproc.hpp>
-#include "perception/binomial_blur.h"
 
+#include "perception/binomial_blur.h"
 #include "perception/color_gradient.h"
 
 namespace corridor {

@@ -68,6 +68,16 @@ TEST(BinomialBlurTest, AnImageBlurredIntoItselfIsBlurredFromTheOriginal) {
   EXPECT_EQ(cv::norm(image, expected, cv::NORM_INF), 0.0);
 }
 
+// Into a view of the same pixels (another header on them): still blurred from the original.
+TEST(BinomialBlurTest, AViewOfTheImagesPixelsIsBlurredFromTheOriginal) {
+  cv::Mat image(20, 30, CV_8UC1);
+  cv::RNG(9).fill(image, cv::RNG::UNIFORM, 0, 256);
+  const cv::Mat expected = Reference(image, 5, 15, 3);
+  cv::Mat view = image.rowRange(5, 15);
+  ASSERT_TRUE(BinomialBlur(image, 5, 15, 3, &view).ok());
+  EXPECT_EQ(cv::norm(view, expected, cv::NORM_INF), 0.0);
+}
+
 TEST(BinomialBlurTest, RejectsBadImagesTapsAndRows) {
   cv::Mat out;
   const cv::Mat image(10, 10, CV_8UC3, cv::Scalar::all(9));
