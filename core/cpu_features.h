@@ -8,8 +8,9 @@
 #define CORRIDOR_AVX2_VARIANTS 1
 #endif
 
-// For a loop body shared by both variants that the compiler might not inline by itself (an
-// out-of-line body is compiled for the baseline only, and its AVX2 variant would not be one).
+// On the loop bodies the baseline and AVX2 variants share (the rasteriser's rows, the colour
+// Sobel, the binomial rows): the compiler must inline them, for an out-of-line body is compiled
+// for the baseline only and its "AVX2" variant would not be one (GCC kept BinomialBlur's out).
 #if defined(__GNUC__)
 #define CORRIDOR_ALWAYS_INLINE __attribute__((always_inline))
 #else

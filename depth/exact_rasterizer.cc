@@ -73,7 +73,6 @@ BoxModel MakeBoxModel(const CorridorGeometry& g, const RasterizerOptions& option
   return box;
 }
 
-
 // The per-row constants of the undistorted loop.
 struct RowConstants {
   float nr;               // n.r of the row (n has no x part).
@@ -88,7 +87,7 @@ using RowKernel = void (*)(const BoxModel&, const RowConstants&, int, float*);
 // (no ceiling): wall points above max_height get 0. Bitwise, not short-circuit, operators and
 // selects: no branches, so the loop vectorises.
 template <bool kEndWall, bool kCutWalls>
-inline void RowBody(const BoxModel& box, const RowConstants& row, int width, float* out) {
+CORRIDOR_ALWAYS_INLINE inline void RowBody(const BoxModel& box, const RowConstants& row, int width, float* out) {
   const float inf = std::numeric_limits<float>::infinity();
   for (int u = 0; u < width; ++u) {
     const float mr = row.mr0 + row.mr_step * u;

@@ -2,24 +2,25 @@
 
 // Row kernels of the binomial filters [1 2 1] / 4 and [1 4 6 4 1] / 16 on 8-bit pixels with C
 // interleaved channels, in 16-bit integers: the sums down a column of rows, then along the row.
-// Shared by PyrDown (working_image.cc) and BinomialBlur (binomial_blur.cc); inline and without a
-// target, so that each caller's AVX2 variant vectorises them with AVX2.
+// Shared by PyrDown (working_image.cc) and BinomialBlur (binomial_blur.cc); always inlined and
+// without a target, so that each caller's AVX2 variant vectorises them with AVX2.
 
 #include <cstdint>
 
+#include "core/cpu_features.h"
 #include "perception/image_border.h"
 
 namespace corridor {
 namespace binomial {
 
 // v[i] = r0 + 2 r1 + r2 (at most 4 * 255).
-inline void ColumnSums3(const uint8_t* r0, const uint8_t* r1, const uint8_t* r2, int n,
+CORRIDOR_ALWAYS_INLINE inline void ColumnSums3(const uint8_t* r0, const uint8_t* r1, const uint8_t* r2, int n,
                         uint16_t* __restrict v) {
   for (int i = 0; i < n; ++i) v[i] = static_cast<uint16_t>(r0[i] + 2 * r1[i] + r2[i]);
 }
 
 // v[i] = r0 + 4 r1 + 6 r2 + 4 r3 + r4 (at most 16 * 255).
-inline void ColumnSums5(const uint8_t* r0, const uint8_t* r1, const uint8_t* r2,
+CORRIDOR_ALWAYS_INLINE inline void ColumnSums5(const uint8_t* r0, const uint8_t* r1, const uint8_t* r2,
                         const uint8_t* r3, const uint8_t* r4, int n, uint16_t* __restrict v) {
   for (int i = 0; i < n; ++i) {
     v[i] = static_cast<uint16_t>(r0[i] + r4[i] + 4 * (r1[i] + r3[i]) + 6 * r2[i]);
@@ -41,7 +42,7 @@ inline void ReflectEnds(uint16_t* v, int width, int pad) {
 
 // h[i] = (v[i - C] + 2 v[i] + v[i + C] + 8) / 16, rounded half up: the 3x3 filter's pixels.
 template <int C>
-inline void RowSums3(const uint16_t* v, int n, uint8_t* __restrict h) {
+CORRIDOR_ALWAYS_INLINE inline void RowSums3(const uint16_t* v, int n, uint8_t* __restrict h) {
   for (int i = 0; i < n; ++i) {
     h[i] = static_cast<uint8_t>(static_cast<uint16_t>(v[i - C] + 2 * v[i] + v[i + C] + 8) >> 4);
   }
@@ -50,7 +51,7 @@ inline void RowSums3(const uint16_t* v, int n, uint8_t* __restrict h) {
 // h[i] = (v[i - 2C] + 4 v[i - C] + 6 v[i] + 4 v[i + C] + v[i + 2C] + 128) / 256, rounded half up
 // (at most 256 * 255 + 128 < 2^16): the 5x5 filter's pixels.
 template <int C>
-inline void RowSums5(const uint16_t* v, int n, uint8_t* __restrict h) {
+CORRIDOR_ALWAYS_INLINE inline void RowSums5(const uint16_t* v, int n, uint8_t* __restrict h) {
   for (int i = 0; i < n; ++i) {
     h[i] = static_cast<uint8_t>(
         static_cast<uint16_t>(v[i - 2 * C] + v[i + 2 * C] + 4 * (v[i - C] + v[i + C]) + 6 * v[i] +

@@ -17,7 +17,7 @@ namespace {
 // (kFirst) writes gx, gy and |gx| + |gy| to bx, by, best; the others replace them where their
 // |gx| + |gy| is larger.
 template <bool kFirst>
-inline void SobelRowBody(const uchar* above, const uchar* centre, const uchar* below, int cols,
+CORRIDOR_ALWAYS_INLINE inline void SobelRowBody(const uchar* above, const uchar* centre, const uchar* below, int cols,
                          short* __restrict s, short* __restrict t, short* __restrict bx,
                          short* __restrict by, short* __restrict best) {
   for (int u = 0; u < cols; ++u) {
