@@ -114,6 +114,11 @@ void PrintSummary(const EvalReport& r) {
                 FormatNumber(m.abs_rel, 4).c_str(), FormatNumber(m.rmse, 3).c_str(),
                 FormatNumber(m.coverage, 3).c_str());
   }
+  if (a.ceiling.num_visible > 0) {
+    std::printf("; ceiling within %s%% on %d of %d frames in view (%d found)",
+                FormatNumber(100 * kCeilingTolerance, 0).c_str(), a.ceiling.num_within,
+                a.ceiling.num_visible, a.ceiling.num_found);
+  }
   std::printf("\n");
 }
 

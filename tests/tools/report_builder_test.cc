@@ -94,6 +94,36 @@ TEST(ReportBuilder, DepthBinsArePixelWeighted) {
   EXPECT_DOUBLE_EQ(r.depth_bins[1].end, 2.0);
 }
 
+// Ceiling rows by hand: frames in view count whether or not they were found; the error is
+// |H_est - H_true| / H_true over those found, and "within" means at most 3%.
+TEST(ReportBuilder, CeilingCountsFramesInViewFoundAndWithinTolerance) {
+  std::vector<FrameRecord> frames = Frames();
+  for (FrameRecord& f : frames) {
+    f.truth.camera_height = 0.5;
+    f.truth.ceiling_height = 2.5;
+  }
+  frames[0].ceiling_visible = frames[0].ceiling_estimated = true;
+  frames[0].estimate.ceiling_height = 2.55;  // 2% off: within.
+  frames[1].ceiling_visible = frames[1].ceiling_estimated = true;
+  frames[1].estimate.ceiling_height = 2.75;  // 10% off.
+  frames[2].ceiling_visible = true;          // In view, not found.
+  frames[2].ceiling_estimated = false;
+  frames[3].ceiling_visible = false;         // Failed frame, not in view: not counted.
+  const EvalReport r = BuildReport(frames, {1.5, 2.0}, "grid", "paper");
+  const CeilingSummary& e = r.scenes[0].ceiling;
+  EXPECT_EQ(e.num_visible, 2);
+  EXPECT_EQ(e.num_found, 2);
+  EXPECT_EQ(e.num_within, 1);
+  EXPECT_NEAR(e.mean_rel_error, (0.02 + 0.10) / 2, 1e-12);
+  EXPECT_NEAR(e.max_rel_error, 0.10, 1e-12);
+  const CeilingSummary& h = r.scenes[1].ceiling;
+  EXPECT_EQ(h.num_visible, 1);
+  EXPECT_EQ(h.num_found, 0);
+  EXPECT_TRUE(std::isnan(h.mean_rel_error));
+  EXPECT_EQ(r.all.ceiling.num_visible, 3);
+  EXPECT_EQ(r.all.ceiling.num_within, 1);
+}
+
 TEST(ReportBuilder, SceneDifficulty) {
   EXPECT_EQ(SceneDifficulty("Cord_E01_z"), "easy");
   EXPECT_EQ(SceneDifficulty("Cord_H02_z"), "hard");

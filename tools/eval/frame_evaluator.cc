@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <limits>
 
+#include "evaluation/ceiling_visibility.h"
 #include "io/dataset.h"
 #include "io/image_io.h"
 #include "tools/eval/frame_panel.h"
@@ -74,7 +75,10 @@ Status EvaluateFrame(const InputScene& scene, size_t index, const DepthRecoverer
   record->scene = scene.name;
   record->frame = frame.name;
   record->has_truth = frame.has_truth;
-  if (frame.has_truth) record->truth = frame.truth.geometry;
+  if (frame.has_truth) {
+    record->truth = frame.truth.geometry;
+    record->ceiling_visible = CeilingJunctionVisible(record->truth, scene.camera);
+  }
   record->has_depth_truth = !frame.depth_path.empty();
 
   cv::Mat image, gt;
@@ -99,6 +103,8 @@ Status EvaluateFrame(const InputScene& scene, size_t index, const DepthRecoverer
   record->status = status;
   record->has_estimate = status.ok() && result.has_geometry;
   if (record->has_estimate) record->estimate = result.geometry;
+  record->ceiling_estimated = record->has_estimate && result.ceiling.found &&
+                              result.geometry.HasCeiling();
 
   // Ground truth that was read is evaluated, also when the frame failed (then nothing is
   // predicted, so coverage is 0); a status ok implies the sizes match.

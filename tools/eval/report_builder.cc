@@ -45,7 +45,7 @@ GroupSummary Summarize(const std::string& name, const std::vector<FrameRecord>& 
   g.name = name;
   std::vector<std::vector<DepthMetrics>> per_cap(num_caps);
   std::vector<double> est_width, true_width, frame_width_error, yaw, pitch, offset;
-  std::vector<double> t_perception, t_solve, t_rasterize, t_total;
+  std::vector<double> t_perception, t_solve, t_rasterize, t_total, ceiling_error;
   for (size_t i : members) {
     const FrameRecord& f = frames[i];
     ++g.num_frames;
@@ -63,6 +63,16 @@ GroupSummary Summarize(const std::string& name, const std::vector<FrameRecord>& 
       yaw.push_back(std::abs(f.estimate.yaw - f.truth.yaw));
       pitch.push_back(std::abs(f.estimate.pitch - f.truth.pitch));
       offset.push_back(std::abs(f.estimate.offset - f.truth.offset));
+    }
+    if (f.has_truth && f.ceiling_visible) {
+      ++g.ceiling.num_visible;
+      if (f.ceiling_estimated) {
+        // Visible implies a true ceiling above the camera, so the division is safe.
+        const double error =
+            std::abs(f.estimate.ceiling_height - f.truth.ceiling_height) / f.truth.ceiling_height;
+        ceiling_error.push_back(error);
+        if (error <= kCeilingTolerance) ++g.ceiling.num_within;
+      }
     }
     if (f.ran) {
       t_perception.push_back(f.times.perception);
@@ -82,6 +92,11 @@ GroupSummary Summarize(const std::string& name, const std::vector<FrameRecord>& 
   g.pose.pitch = MeanOf(pitch);
   g.pose.offset = MeanOf(offset);
   g.pose.num_frames = static_cast<int>(yaw.size());
+  g.ceiling.num_found = static_cast<int>(ceiling_error.size());
+  g.ceiling.mean_rel_error = MeanOf(ceiling_error);
+  if (!ceiling_error.empty()) {
+    g.ceiling.max_rel_error = *std::max_element(ceiling_error.begin(), ceiling_error.end());
+  }
   g.timing.perception = Summarize(t_perception);
   g.timing.solve = Summarize(t_solve);
   g.timing.rasterize = Summarize(t_rasterize);

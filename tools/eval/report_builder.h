@@ -32,6 +32,18 @@ struct PoseErrorSummary {
   int num_frames = 0;        // Frames with both an estimate and truth.
 };
 
+// The ceiling height (beyond the paper) over the frames whose true ceiling junctions are in view.
+struct CeilingSummary {
+  double mean_rel_error = kUnknown;  // Mean |H_est - H_true| / H_true over the visible frames found.
+  double max_rel_error = kUnknown;   // Largest of those errors.
+  int num_visible = 0;               // Frames whose true ceiling junction is in view.
+  int num_found = 0;                 // Of those, frames where the ceiling search found a height.
+  int num_within = 0;                // Of those found, frames within kCeilingTolerance.
+};
+
+// The ceiling criterion: an estimate within 3% of the true height.
+inline constexpr double kCeilingTolerance = 0.03;
+
 // Median and 90th percentile of one stage's time, seconds.
 struct TimeSummary {
   double median = kUnknown;  // Linear-interpolated 50th percentile.
@@ -56,6 +68,7 @@ struct GroupSummary {
   std::vector<DepthMetrics> depth;  // One per cap: AverageDepthMetrics of the per-image metrics.
   WidthSummary width;               // Table 1.
   PoseErrorSummary pose;            // Pose errors.
+  CeilingSummary ceiling;           // Ceiling height where it is in view.
   TimingSummary timing;             // Per-stage times.
 };
 

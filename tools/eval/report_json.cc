@@ -21,6 +21,7 @@ class JsonObject {
   JsonObject& String(const std::string& key, const std::string& value) {
     return Add(key, JsonString(value));
   }
+  JsonObject& Bool(const std::string& key, bool value) { return Add(key, value ? "true" : "false"); }
   // Nested values are indented by re-indenting their lines.
   std::string Text() const {
     if (fields_.empty()) return "{}";
@@ -72,6 +73,7 @@ std::string Geometry(const CorridorGeometry& g) {
   JsonObject o;
   o.Number("yaw", g.yaw).Number("pitch", g.pitch).Number("offset", g.offset);
   o.Number("width", g.width).Number("camera_height", g.camera_height);
+  o.Number("ceiling_height", g.ceiling_height > 0 ? g.ceiling_height : kUnknown);
   return o.Text();
 }
 
@@ -94,6 +96,13 @@ std::string Group(const GroupSummary& g, const std::vector<double>& caps, bool i
   pose.Number("yaw_abs_error_rad", g.pose.yaw).Number("pitch_abs_error_rad", g.pose.pitch);
   pose.Number("offset_abs_error_m", g.pose.offset).Int("num_frames", g.pose.num_frames);
   o.Add("pose", pose.Text());
+  JsonObject ceiling;
+  ceiling.Int("num_visible", g.ceiling.num_visible).Int("num_found", g.ceiling.num_found);
+  ceiling.Int("num_within_tolerance", g.ceiling.num_within);
+  ceiling.Number("tolerance", kCeilingTolerance);
+  ceiling.Number("mean_rel_error", g.ceiling.mean_rel_error);
+  ceiling.Number("max_rel_error", g.ceiling.max_rel_error);
+  o.Add("ceiling", ceiling.Text());
   JsonObject timing;
   timing.Add("perception", Time(g.timing.perception)).Add("solve", Time(g.timing.solve));
   timing.Add("rasterize", Time(g.timing.rasterize)).Add("total", Time(g.timing.total));
@@ -114,6 +123,7 @@ std::string Frame(const FrameRecord& f, const std::vector<double>& caps) {
   o.Number("width_rel_error", f.has_estimate && f.has_truth
                                   ? RelativeWidthError(f.estimate.width, f.truth.width)
                                   : kUnknown);
+  o.Bool("ceiling_visible", f.ceiling_visible).Bool("ceiling_estimated", f.ceiling_estimated);
   for (size_t c = 0; c < caps.size() && c < f.metrics.size(); ++c) {
     o.Add(CapKey(caps[c]), Metrics(f.metrics[c]));
   }

@@ -111,6 +111,27 @@ TextTable PoseTable(const EvalReport& r) {
   return t;
 }
 
+TextTable CeilingTable(const EvalReport& r) {
+  TextTable t;
+  t.id = "ceiling";
+  t.title = "Ceiling height (beyond the paper), frames whose true ceiling junction is in view";
+  t.header = {"Scene", "in view", "found", "within " + FormatNumber(100 * kCeilingTolerance, 0) + "%",
+              "mean error %", "worst error %"};
+  for (const GroupSummary* g : Rows(r)) {
+    const CeilingSummary& c = g->ceiling;
+    AddRow(&t,
+           {g->name, Int(c.num_visible), Int(c.num_found), Int(c.num_within),
+            Percent(c.mean_rel_error, 2), Percent(c.max_rel_error, 2)},
+           IsSummary(r, g));
+  }
+  t.note =
+      "In view: the true ceiling/wall junction, projected through the true geometry, spans at "
+      "least 10% of the image's smaller side within 40 m. Errors are |H_est - H_true| / H_true "
+      "over the frames found; a frame whose ceiling height was given, not searched, is not "
+      "found.";
+  return t;
+}
+
 TextTable TimingTable(const EvalReport& r) {
   TextTable t;
   t.id = "timing";
@@ -181,6 +202,7 @@ std::vector<TextTable> ReportTables(const std::vector<EvalReport>& configs) {
   for (size_t c = 0; c < r.caps.size(); ++c) tables.push_back(DepthTable(r, c));
   if (configs.size() > 1) tables.push_back(CompareTable(configs));
   tables.push_back(PoseTable(r));
+  if (r.all.ceiling.num_visible > 0) tables.push_back(CeilingTable(r));
   tables.push_back(TimingTable(r));
   if (!r.failures.empty()) tables.push_back(FailureTable(r));
   return tables;
