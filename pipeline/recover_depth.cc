@@ -101,6 +101,8 @@ bool RecoverDepthOptions::Check(std::string* why) const {
     reason = "width_prior must be >= 0 (0 = none)";
   } else if (!(max_width_change >= 0 && max_width_change < 1)) {
     reason = "max_width_change must be in [0, 1) (0 = off)";
+  } else if (!(max_ceiling_disagreement >= 0 && std::isfinite(max_ceiling_disagreement))) {
+    reason = "max_ceiling_disagreement must be finite and >= 0 (0 = off)";
   } else if (!(ceiling_height >= 0 && std::isfinite(ceiling_height))) {
     reason = "ceiling_height must be >= 0 (0 = unknown)";
   } else if (search_max_width != 0 && search_max_width < 64) {
@@ -164,6 +166,33 @@ double CeilingDisagreement(const CeilingEstimate& ceiling, double camera_height,
     return -1;
   }
   return std::abs(std::log(a_left / a_right));
+}
+
+// In a sequence, the ceiling is as constant as the width: a frame whose ceiling is not trusted (not
+// found, its two sides too weak to compare, or disagreeing because a wall distance is wrong and
+// so its side's height) takes the previous trusted height.
+// `previous` carries a ceiling only when one was trusted (SequencePrior).
+void HoldCeiling(const CorridorGeometry* previous, double max_disagreement, double min_support,
+                 CorridorGeometry* g, RecoverDepthResult* result) {
+  const double disagreement = CeilingDisagreement(result->ceiling, g->camera_height, min_support);
+  const bool found = result->ceiling.found && g->HasCeiling();
+  result->ceiling_trusted = found && disagreement >= 0 && disagreement <= max_disagreement;
+  if (!(max_disagreement > 0) || previous == nullptr || !previous->HasCeiling()) return;
+  if (result->ceiling_trusted) return;
+  const CorridorGeometry& held = *previous;
+  std::ostringstream how;
+  how.precision(2);
+  how << std::fixed;
+  if (found && disagreement >= 0) {
+    how << "ceiling sides at " << result->ceiling.side_height[0] << " and "
+        << result->ceiling.side_height[1] << " m disagree";
+  } else {
+    how << (found ? "ceiling sides too weak to compare" : "no ceiling found");
+  }
+  how << ": the previous frame's " << held.ceiling_height << " m held";
+  g->ceiling_height = held.ceiling_height;
+  result->ceiling_held = true;
+  AddFallbackNote(how.str(), result);
 }
 
 }  // namespace
@@ -343,6 +372,8 @@ Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* res
       status = MoveInnerWall(search, previous, &geometry, result);
       if (!status.ok()) return finish(status);
     }
+    HoldCeiling(previous, options_.max_ceiling_disagreement, options_.ceiling.min_support,
+                &geometry, result);
   }
   result->times.ceiling = SecondsSince(stage);
   stage = Clock::now();

@@ -44,6 +44,8 @@ struct RecoverDepthOptions {
   double width_prior = 0.0;                // Width for frames where one junction is hidden, m (0 = none; a sequence uses the previous frame's).
   double max_width_change = 0.15;          // In a sequence, a width this much (relative) narrower than the previous frame's means one junction is
                                            // wrong (a box edge or grout line taken for it): the previous width is held from the wall that moved less (0 = off).
+  double max_ceiling_disagreement = 0.10;  // In a sequence, a ceiling not found, or whose two sides' heights above the camera differ by more than this
+                                           // (|log ratio|; a wall distance is wrong), is replaced by the previous frame's height (0 = off).
   bool estimate_end_wall = true;           // Look for a wall across the corridor where both junctions end.
   EndWallDetectorOptions end_wall;         // End-wall search (beyond the paper).
   int search_max_width = 640;              // Wider images are halved (pyrDown) until they fit, one copy shared by the ceiling and end-wall searches, px (0 = full resolution).
@@ -72,6 +74,8 @@ struct RecoverDepthResult {
   std::string fallback;           // Non-empty when the geometry is not the two junction lines' alone: how
                                   // (one junction and a known width, or the previous frame's width held).
   bool width_held = false;        // True when the previous frame's width replaced this frame's (max_width_change).
+  bool ceiling_held = false;      // True when the previous frame's ceiling height replaced this frame's (max_ceiling_disagreement).
+  bool ceiling_trusted = false;   // True when the ceiling search found the ceiling and both sides, strong enough to compare, agreed within max_ceiling_disagreement.
 
   // After Detect: both junctions were found, or only one (Reconstruct may then use a known width).
   bool ReadyToReconstruct() const {

@@ -9,6 +9,8 @@ namespace corridor {
 // one junction is hidden and is held when the next width is much narrower (RecoverDepthOptions::
 // max_width_change). Held kMaxHeld frames in a row, the width is let go for one frame: the
 // corridor may really have narrowed, or the held width was the wrong one.
+// Its ceiling height is the last one whose two sides agreed (RecoverDepthResult::ceiling_trusted),
+// or none: only such a height is held over a frame whose sides disagree.
 class SequencePrior {
  public:
   static constexpr int kMaxHeld = 3;
@@ -21,7 +23,11 @@ class SequencePrior {
   // Records a frame after Reconstruct; failed frames change nothing.
   void Update(const RecoverDepthResult& result) {
     if (!result.status.ok() || !result.has_geometry) return;
+    const double trusted = result.ceiling_trusted || result.ceiling_held
+                               ? result.geometry.ceiling_height
+                               : previous_.ceiling_height;
     previous_ = result.geometry;
+    previous_.ceiling_height = has_previous_ || result.ceiling_trusted ? trusted : 0.0;
     has_previous_ = true;
     held_ = result.width_held ? held_ + 1 : 0;
   }

@@ -27,6 +27,10 @@ DEFINE_double(max_width_change, 0.15,
               "In a sequence, a width this much (relative) narrower than the previous frame's means "
               "one junction is wrong: the previous width is held, for up to 3 frames in a row "
               "(0 = off)");
+DEFINE_double(max_ceiling_disagreement, 0.10,
+              "In a sequence, a frame whose ceiling was not found, or whose two sides' heights "
+              "above the camera differ by more than this (|log ratio|), takes the previous "
+              "frame's ceiling height (0 = off)");
 DEFINE_bool(end_wall, true,
             "Look for a wall across the corridor where both junctions end, and close the depth "
             "there (beyond the paper)");
@@ -69,6 +73,7 @@ Status RecoverDepthOptionsFromFlags(RecoverDepthOptions* options) {
   options->ceiling_checks_inner_lines = FLAGS_inner_line_check;
   options->width_prior = FLAGS_width_prior;
   options->max_width_change = FLAGS_max_width_change;
+  options->max_ceiling_disagreement = FLAGS_max_ceiling_disagreement;
   options->points_per_line = FLAGS_points_per_line;
   options->search_max_width = FLAGS_search_max_width;
   options->perception.max_work_width = FLAGS_junction_max_width;

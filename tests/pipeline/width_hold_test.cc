@@ -88,7 +88,8 @@ TEST(WidthHoldTest, AWiderWidthIsNotHeld) {
   narrow.width = 0.5 * h.previous.width;
   const RecoverDepthResult result = RecoverWith(h, HoldOptions(), &narrow);
   EXPECT_FALSE(result.width_held);
-  EXPECT_TRUE(result.fallback.empty()) << result.fallback;
+  // (The frame's ceiling, measured against its too-near right wall, may still be held.)
+  EXPECT_EQ(result.fallback.find("width"), std::string::npos) << result.fallback;
 }
 
 // In a stream, the width is held at most three frames in a row: then the narrow width is let go

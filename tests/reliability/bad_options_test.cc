@@ -118,6 +118,7 @@ TEST(BadOptions, DepthToolExitsTwoBeforeAnyWork) {
       {"--roi_top=2", "roi_top_fraction"},
       {"--ceiling_height=-2", "ceiling_height"},
       {"--max_width_change=1.5", "max_width_change"},
+      {"--max_ceiling_disagreement=-1", "max_ceiling_disagreement"},
       {"--vis_max_depth=0", "--vis_max_depth"},
       {"--no_such_flag=1", "no_such_flag"},
       {"stray_argument", "unexpected argument 'stray_argument'"},

@@ -103,7 +103,8 @@ Status EvaluateFrame(const InputScene& scene, size_t index, const DepthRecoverer
   record->status = status;
   record->has_estimate = status.ok() && result.has_geometry;
   if (record->has_estimate) record->estimate = result.geometry;
-  record->ceiling_estimated = record->has_estimate && result.ceiling.found &&
+  record->ceiling_estimated = record->has_estimate &&
+                              (result.ceiling.found || result.ceiling_held) &&
                               result.geometry.HasCeiling();
 
   // Ground truth that was read is evaluated, also when the frame failed (then nothing is

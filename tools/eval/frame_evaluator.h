@@ -30,7 +30,7 @@ struct FrameRecord {
   bool has_truth = false;             // True when truth.yaml lists the frame.
   CorridorGeometry truth;             // The true geometry (valid when has_truth).
   bool ceiling_visible = false;       // The true ceiling/wall junctions are in view (ceiling_visibility.h).
-  bool ceiling_estimated = false;     // The ceiling search found the ceiling: estimate.ceiling_height is its height.
+  bool ceiling_estimated = false;     // The ceiling search found the ceiling (or a sequence held it): estimate.ceiling_height is its height.
   bool has_depth_truth = false;       // True when the dataset has a ground-truth depth image.
   std::vector<DepthMetrics> metrics;  // One per cap; a failed frame with gt has coverage 0.
   std::vector<DepthBin> depth_bins;   // AbsRel by true depth, 1 m bins up to the largest cap.
