@@ -4,18 +4,22 @@
 
 #include <gtest/gtest.h>
 
+#include "synth/presets.h"
+
 namespace corridor {
 namespace {
 
-// 420x360, fx = fy = 250, principal point at the centre, no distortion.
+// The paper's camera, whose intrinsics the hand computations below use: 420x360, fx = fy = 250,
+// principal point (209.5, 179.5), no distortion.
 Camera PaperCamera() {
-  Camera camera;
-  camera.image_width = 420;
-  camera.image_height = 360;
-  camera.fx = camera.fy = 250;
-  camera.cx = 209.5;
-  camera.cy = 179.5;
-  camera.mount_height = 0.66;
+  const Camera camera = synth::PaperCamera(0.66);
+  EXPECT_EQ(camera.image_width, 420);
+  EXPECT_EQ(camera.image_height, 360);
+  EXPECT_EQ(camera.fx, 250.0);
+  EXPECT_EQ(camera.fy, 250.0);
+  EXPECT_EQ(camera.cx, 209.5);
+  EXPECT_EQ(camera.cy, 179.5);
+  EXPECT_FALSE(camera.HasDistortion());
   return camera;
 }
 

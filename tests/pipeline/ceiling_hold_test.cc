@@ -12,6 +12,7 @@
 #include "pipeline/sequence_prior.h"
 #include "synth/corridor_renderer.h"
 #include "synth/presets.h"
+#include "tests/support/corridor_frame.h"
 
 namespace corridor {
 namespace {
@@ -22,15 +23,13 @@ struct PaperFrame {
 };
 
 PaperFrame MakeFrame() {
+  const synth::ScenePreset preset = testing_util::PaperScene("Cord_E01");
   PaperFrame p;
-  for (const auto& preset : synth::PaperPreset()) {
-    if (preset.name != "Cord_E01") continue;
-    p.camera = preset.camera;
-    EXPECT_TRUE(synth::RenderFrame(synth::BuildScene(preset.scene), preset.camera,
-                                   preset.poses.at(0), &p.frame)
-                    .ok());
-  }
-  EXPECT_FALSE(p.frame.bgr.empty()) << "no Cord_E01 in the paper preset";
+  p.camera = preset.camera;
+  if (preset.poses.empty()) return p;
+  EXPECT_TRUE(synth::RenderFrame(synth::BuildScene(preset.scene), preset.camera,
+                                 preset.poses.at(0), &p.frame)
+                  .ok());
   return p;
 }
 
