@@ -23,11 +23,12 @@ class SequencePrior {
   // Records a frame after Reconstruct; failed frames change nothing.
   void Update(const RecoverDepthResult& result) {
     if (!result.status.ok() || !result.has_geometry) return;
+    // Before the first frame previous_ is default-constructed: no ceiling (0).
     const double trusted = result.ceiling_trusted || result.ceiling_held
                                ? result.geometry.ceiling_height
                                : previous_.ceiling_height;
     previous_ = result.geometry;
-    previous_.ceiling_height = has_previous_ || result.ceiling_trusted ? trusted : 0.0;
+    previous_.ceiling_height = trusted;
     has_previous_ = true;
     held_ = result.width_held ? held_ + 1 : 0;
   }
