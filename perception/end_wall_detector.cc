@@ -8,8 +8,8 @@
 
 #include "core/corridor_frame.h"
 #include "perception/appearance.h"
-#include "perception/color_gradient.h"
 #include "perception/corridor_projection.h"
+#include "perception/oriented_edges.h"
 #include "perception/working_image.h"
 
 namespace corridor {
@@ -187,10 +187,11 @@ Status DetectEndWall(const cv::Mat& full_bgr, const Camera& full_camera, const C
   const cv::Mat& bgr = work.bgr;
   const Camera& camera = work.camera;
   // Edges of the colour gradient: a dark baseboard on a dark floor has no grey edge.
-  cv::Mat smooth, dx, dy, edges;
-  cv::GaussianBlur(bgr, smooth, cv::Size(0, 0), 1.0);
-  ColorGradient(smooth, &dx, &dy, nullptr);
-  cv::Canny(dx, dy, edges, 20, 60, true);
+  cv::Mat dx, dy, edges;
+  if (!ColorCannyEdges(bgr, 0, bgr.rows, &dx, &dy, &edges)) {
+    estimate->reason = "the image is not 8-bit: no edges to search";
+    return Status::Ok();
+  }
   const EdgeProbe probe(edges, camera, g, o.reach_px);
 
   // Near the vanishing point everything converges (grout, lights, doors): too few pixels to tell.

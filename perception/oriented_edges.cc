@@ -24,6 +24,15 @@ int OrientationBin(double gx, double gy) {
 
 }  // namespace
 
+bool ColorCannyEdges(const cv::Mat& bgr, int from, int to, cv::Mat* dx, cv::Mat* dy,
+                     cv::Mat* edges) {
+  cv::Mat smooth;
+  if (!BinomialBlur(bgr, from, to, 5, &smooth).ok()) return false;
+  ColorGradient(smooth, dx, dy, nullptr);
+  cv::Canny(*dx, *dy, *edges, 20, 60, true);
+  return true;
+}
+
 OrientedEdges ComputeOrientedEdges(const cv::Mat& bgr, int top, int bottom) {
   OrientedEdges out;
   top = std::clamp(top, 0, bgr.rows);
@@ -31,10 +40,8 @@ OrientedEdges ComputeOrientedEdges(const cv::Mat& bgr, int top, int bottom) {
   out.top = top;
   if (bottom <= top) return out;
   const int from = std::max(0, top - kBandMargin), to = std::min(bgr.rows, bottom + kBandMargin);
-  cv::Mat smooth, dx, dy, edges;
-  if (!BinomialBlur(bgr, from, to, 5, &smooth).ok()) return out;  // Not 8-bit: no edges.
-  ColorGradient(smooth, &dx, &dy, nullptr);
-  cv::Canny(dx, dy, edges, 20, 60, true);
+  cv::Mat dx, dy, edges;
+  if (!ColorCannyEdges(bgr, from, to, &dx, &dy, &edges)) return out;  // Not 8-bit: no edges.
   const cv::Rect band(0, top - from, bgr.cols, bottom - top);
   out.edges = edges(band).clone();
   // Each edge pixel's orientation bit, OR-ed over its 3x3 neighbourhood.

@@ -1,11 +1,20 @@
 #pragma once
 
-// Private helper of the ceiling search: colour edges that know which way they run, and how well a
-// projected line follows them.
+// Private helpers of the ceiling and end-wall searches: colour edges, edges that know which way
+// they run, and how well a projected line follows them.
 
 #include <opencv2/core.hpp>
 
 namespace corridor {
+
+// Canny edges (20 / 60, L2) of the colour gradient of the image rows [from, to), after the
+// binomial blur of sigma 1 (binomial_blur.h, which reads the rows just outside the range where the
+// image has them). dx and dy get the gradient, edges 255 on edges; all to - from rows. False
+// (and nothing written) for an image that is not 8-bit or an empty or out-of-range row range.
+// Colour edges: a green wall under a grey ceiling, or a dark baseboard on a dark floor, has
+// hardly any grey edge.
+bool ColorCannyEdges(const cv::Mat& bgr, int from, int to, cv::Mat* dx, cv::Mat* dy,
+                     cv::Mat* edges);
 
 // Canny edges of the colour gradient on the image rows [top, bottom), each with its orientation.
 struct OrientedEdges {
@@ -15,8 +24,7 @@ struct OrientedEdges {
 };
 
 // Edges of rows [top, bottom) (clamped to the image), computed with a few rows of margin so that
-// the blur and Canny's hysteresis see nearly what they would see over the whole image. Colour
-// edges: a green wall under a grey ceiling has hardly any grey edge.
+// the blur and Canny's hysteresis see nearly what they would see over the whole image.
 OrientedEdges ComputeOrientedEdges(const cv::Mat& bgr, int top, int bottom);
 
 // Fraction of the line's visible samples (x >= 0; rows inside the band) that have an edge within

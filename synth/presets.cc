@@ -1,5 +1,6 @@
 #include "synth/presets.h"
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 
@@ -36,18 +37,18 @@ constexpr PaperScene kPaperScenes[] = {
 
 }  // namespace
 
-Camera PaperCamera(double mount_height) {
+Camera PaperCamera(double mount_height, double scale) {
   Camera camera;
-  camera.image_width = 420;
-  camera.image_height = 360;
-  camera.fx = camera.fy = 250.0;
-  camera.cx = 209.5;
-  camera.cy = 179.5;
+  camera.image_width = static_cast<int>(std::lround(420 * scale));
+  camera.image_height = static_cast<int>(std::lround(360 * scale));
+  camera.fx = camera.fy = 250.0 * scale;
+  camera.cx = 0.5 * (camera.image_width - 1);
+  camera.cy = 0.5 * (camera.image_height - 1);
   camera.mount_height = mount_height;
   return camera;
 }
 
-std::vector<ScenePreset> PaperPreset() {
+std::vector<ScenePreset> PaperPreset(double scale) {
   std::vector<ScenePreset> presets;
   uint32_t seed = 101;
   for (const PaperScene& p : kPaperScenes) {
@@ -61,7 +62,7 @@ std::vector<ScenePreset> PaperPreset() {
     preset.scene.floor_wall_contrast = p.contrast;
     preset.scene.baseboard_contrast = p.baseboard_contrast;
     preset.scene.seed = seed;
-    preset.camera = PaperCamera(p.camera_height);
+    preset.camera = PaperCamera(p.camera_height, scale);
     SequenceOptions sequence;
     sequence.frames = 15;
     sequence.base.yaw = p.yaw;

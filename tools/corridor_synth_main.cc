@@ -1,5 +1,6 @@
 // corridor_synth: synthetic corridors with exact ground truth, in the dataset layout.
 //   corridor_synth --preset=paper --output_dir=D      (the paper's 9 scenes x 15 frames)
+//   corridor_synth --preset=paper --paper_scale=1.5 --output_dir=D   (the same at 630x540)
 //   corridor_synth --preset=sequence --frames=30 --corridor_width=2.5 --output_dir=D
 //   corridor_synth --preset=single --yaw=0.1 --pitch=0.05 --output_dir=D
 
@@ -14,6 +15,8 @@
 
 DEFINE_string(preset, "sequence", "paper (9 scenes x 15 frames), sequence, or single");
 DEFINE_string(output_dir, "", "Dataset root to write");
+DEFINE_double(paper_scale, 1.0,
+              "paper preset: pixels per paper pixel (1.5 gives 630x540, fx 375: the same views)");
 DEFINE_string(scene_name, "corridor", "Scene folder name for the single and sequence presets");
 DEFINE_int32(width_px, 640, "Image width, px (single, sequence)");
 DEFINE_int32(height_px, 480, "Image height, px (single, sequence)");
@@ -97,7 +100,10 @@ int Main(int argc, char** argv) {
   if (FLAGS_output_dir.empty()) return Usage("--output_dir is required");
   std::vector<synth::ScenePreset> presets;
   if (FLAGS_preset == "paper") {
-    presets = synth::PaperPreset();
+    if (!(FLAGS_paper_scale >= 0.25 && FLAGS_paper_scale <= 8)) {
+      return Usage("--paper_scale must be in [0.25, 8]");
+    }
+    presets = synth::PaperPreset(FLAGS_paper_scale);
   } else if (FLAGS_preset == "sequence" || FLAGS_preset == "single") {
     synth::ScenePreset preset;
     std::string why;

@@ -1,5 +1,6 @@
 #include "synth/presets.h"
 
+#include <cmath>
 #include <filesystem>
 
 #include <gtest/gtest.h>
@@ -29,6 +30,34 @@ TEST(PresetsTest, PaperPresetMirrorsThePaperDataset) {
   }
   EXPECT_EQ(easy, 6);
   EXPECT_EQ(hard, 3);
+}
+
+// The scaled preset is the same views at finer pixels: the same field of view and principal ray,
+// the same scenes and poses.
+TEST(PresetsTest, ScaledPaperPresetKeepsTheViews) {
+  const auto plain = PaperPreset();
+  const auto scaled = PaperPreset(1.5);
+  ASSERT_EQ(scaled.size(), plain.size());
+  for (size_t i = 0; i < plain.size(); ++i) {
+    const Camera& c = scaled[i].camera;
+    EXPECT_EQ(c.image_width, 630);
+    EXPECT_EQ(c.image_height, 540);
+    EXPECT_DOUBLE_EQ(c.fx, 375.0);
+    EXPECT_DOUBLE_EQ(c.fy, 375.0);
+    EXPECT_DOUBLE_EQ(c.cx, 314.5);  // (630 - 1) / 2: the image centre, as 209.5 is at 420.
+    EXPECT_DOUBLE_EQ(c.cy, 269.5);
+    // Half the horizontal field of view, atan(210 / 250), unchanged.
+    EXPECT_NEAR(std::atan2(c.image_width / 2.0, c.fx), std::atan2(210.0, 250.0), 1e-12);
+    EXPECT_EQ(c.mount_height, plain[i].camera.mount_height);
+    EXPECT_EQ(scaled[i].name, plain[i].name);
+    EXPECT_EQ(scaled[i].scene.width, plain[i].scene.width);
+    ASSERT_EQ(scaled[i].poses.size(), plain[i].poses.size());
+    EXPECT_EQ(scaled[i].poses[7].yaw, plain[i].poses[7].yaw);
+  }
+  const Camera unscaled = PaperCamera(0.66);
+  EXPECT_DOUBLE_EQ(unscaled.cx, 209.5);
+  EXPECT_DOUBLE_EQ(unscaled.cy, 179.5);
+  EXPECT_DOUBLE_EQ(unscaled.fx, 250.0);
 }
 
 TEST(PresetsTest, WriteSceneProducesTheDatasetLayout) {
