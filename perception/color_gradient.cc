@@ -66,17 +66,52 @@ __attribute__((target("avx2"))) void SobelRowAvx2(const uchar* above, const ucha
 }
 #endif
 
+// Splits one row of 8-bit pixels of n channels (2 to 4) into n planar rows.
+CORRIDOR_ALWAYS_INLINE inline void DeinterleaveBody(const uchar* pixels, int cols, int n,
+                                                    uchar* const* planes) {
+  if (n == 3) {
+    uchar* __restrict p0 = planes[0];
+    uchar* __restrict p1 = planes[1];
+    uchar* __restrict p2 = planes[2];
+    for (int u = 0; u < cols; ++u) {
+      p0[u] = pixels[3 * u];
+      p1[u] = pixels[3 * u + 1];
+      p2[u] = pixels[3 * u + 2];
+    }
+    return;
+  }
+  for (int c = 0; c < n; ++c) {
+    uchar* __restrict p = planes[c];
+    for (int u = 0; u < cols; ++u) p[u] = pixels[n * u + c];
+  }
+}
+
+using DeinterleaveFn = void (*)(const uchar*, int, int, uchar* const*);
+
+void Deinterleave(const uchar* pixels, int cols, int n, uchar* const* planes) {
+  DeinterleaveBody(pixels, cols, n, planes);
+}
+
+#ifdef CORRIDOR_AVX2_VARIANTS
+__attribute__((target("avx2"))) void DeinterleaveAvx2(const uchar* pixels, int cols, int n,
+                                                      uchar* const* planes) {
+  DeinterleaveBody(pixels, cols, n, planes);
+}
+#endif
+
 // The row functions for the first channel and the others: AVX2 where the CPU has it.
-void ChooseSobelRows(SobelRowFn* first, SobelRowFn* others) {
+void ChooseSobelRows(SobelRowFn* first, SobelRowFn* others, DeinterleaveFn* split) {
 #ifdef CORRIDOR_AVX2_VARIANTS
   if (CpuHasAvx2()) {
     *first = SobelRowAvx2<true>;
     *others = SobelRowAvx2<false>;
+    *split = DeinterleaveAvx2;
     return;
   }
 #endif
   *first = SobelRow<true>;
   *others = SobelRow<false>;
+  *split = Deinterleave;
 }
 
 // The same through cv::Sobel: grey images (a view keeps using the pixels around it, as
@@ -113,7 +148,7 @@ void ColorGradientOpenCv(const cv::Mat& image, cv::Mat* dx, cv::Mat* dy) {
 }  // namespace
 
 void ColorGradient(const cv::Mat& image, cv::Mat* dx, cv::Mat* dy, std::vector<int>* histogram) {
-  if (image.depth() != CV_8U || image.channels() == 1) {
+  if (image.depth() != CV_8U || image.channels() == 1 || image.channels() > 4) {
     ColorGradientOpenCv(image, dx, dy);
     if (histogram != nullptr) {
       histogram->assign(kGradientBins, 0);
@@ -128,8 +163,27 @@ void ColorGradient(const cv::Mat& image, cv::Mat* dx, cv::Mat* dy, std::vector<i
     return;
   }
   const int rows = image.rows, cols = image.cols, n = image.channels();
-  std::vector<cv::Mat> channels;
-  cv::split(image, channels);
+  // Each image row's channels, split once into one of three planar rows: the rows above, at and
+  // below the current one (Reflect101 at the borders) are always in distinct slots, so nothing is
+  // split twice and the planes stay in the cache (splitting the whole image first cost more than
+  // the Sobel itself).
+  std::vector<uchar> plane_rows(static_cast<size_t>(3) * n * cols);
+  uchar* planes[3][4];
+  int slot_row[3] = {-1, -1, -1};
+  for (int k = 0; k < 3; ++k) {
+    for (int c = 0; c < n; ++c) planes[k][c] = plane_rows.data() + (k * n + c) * cols;
+  }
+  SobelRowFn first_row, other_row;
+  DeinterleaveFn deinterleave;
+  ChooseSobelRows(&first_row, &other_row, &deinterleave);
+  const auto split_row = [&](int r) -> uchar* const* {
+    uchar* const* slot = planes[r % 3];
+    if (slot_row[r % 3] != r) {
+      deinterleave(image.ptr<uchar>(r), cols, n, slot);
+      slot_row[r % 3] = r;
+    }
+    return slot;
+  };
   dx->create(rows, cols, CV_16S);
   dy->create(rows, cols, CV_16S);
   if (histogram != nullptr) histogram->assign(kGradientBins, 0);
@@ -138,18 +192,15 @@ void ColorGradient(const cv::Mat& image, cv::Mat* dx, cv::Mat* dy, std::vector<i
   short* s = scratch.data();
   short* t = s + cols + 2;
   short* best = t + cols + 2;
-  SobelRowFn first_row, other_row;
-  ChooseSobelRows(&first_row, &other_row);
   for (int r = 0; r < rows; ++r) {
     const int above = Reflect101(r - 1, rows), below = Reflect101(r + 1, rows);
     short* bx = dx->ptr<short>(r);
     short* by = dy->ptr<short>(r);
-    first_row(channels[0].ptr<uchar>(above), channels[0].ptr<uchar>(r),
-              channels[0].ptr<uchar>(below), cols, s, t, bx, by, best);
-    for (int c = 1; c < n; ++c) {
-      other_row(channels[c].ptr<uchar>(above), channels[c].ptr<uchar>(r),
-                channels[c].ptr<uchar>(below), cols, s, t, bx, by, best);
-    }
+    uchar* const* a = split_row(above);
+    uchar* const* m = split_row(r);
+    uchar* const* b = split_row(below);
+    first_row(a[0], m[0], b[0], cols, s, t, bx, by, best);
+    for (int c = 1; c < n; ++c) other_row(a[c], m[c], b[c], cols, s, t, bx, by, best);
     if (histogram != nullptr) {
       int* bins = histogram->data();
       for (int u = 0; u < cols; ++u) ++bins[std::min<int>(kGradientBins - 1, best[u])];

@@ -66,6 +66,11 @@ TEST(ColorGradientTest, MatchesSobelPerChannelOnNoiseAndEveryBorder) {
   ExpectSameGradient(RandomImage(9, 1, CV_8UC3, 4));   // One column.
   ExpectSameGradient(RandomImage(16, 16, CV_8UC4, 5)); // Four channels.
   ExpectSameGradient(RandomImage(20, 30, CV_8UC1, 6)); // Grey.
+  // The rows are split into planes three at a time: three rows, two channels, and rows wide
+  // enough for the vector loops and their tails.
+  ExpectSameGradient(RandomImage(3, 70, CV_8UC3, 9));
+  ExpectSameGradient(RandomImage(11, 67, CV_8UC2, 10));
+  ExpectSameGradient(RandomImage(5, 130, CV_8UC4, 11));
 }
 
 TEST(ColorGradientTest, AViewIsTakenOnItsOwnLikeACopy) {
