@@ -16,6 +16,14 @@ namespace corridor {
 bool ColorCannyEdges(const cv::Mat& bgr, int from, int to, cv::Mat* dx, cv::Mat* dy,
                      cv::Mat* edges);
 
+// Gradient orientations in this many bins over 180 degrees, one bit each.
+constexpr int kOrientationBins = 8;
+
+// The bin of the gradient (gx, gy): floor(angle / 22.5 deg), angle = atan2(gy, gx) taken into
+// [0, 180] degrees (180 in the last bin; (0, 0) in bin 0). Comparisons with the bin edges'
+// tangents instead of atan2: the same bins for every integer gradient a Sobel can give.
+int OrientationBin(int gx, int gy);
+
 // Canny edges of the colour gradient on the image rows [top, bottom), each with its orientation.
 struct OrientedEdges {
   int top = 0;      // First image row of the band.
