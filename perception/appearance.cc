@@ -19,12 +19,17 @@ float Median(std::vector<float>* values) {
 
 // The mean colour of the 3x3 pixels around image point p (full-image coordinates; `bgr` holds
 // the rows from roi_top). False when they are not all inside.
-bool Mean3x3(const cv::Mat& bgr, const Eigen::Vector2d& p, int roi_top, cv::Vec3b* mean) {
+bool Mean3x3(const cv::Mat& bgr, const Eigen::Vector2d& p, int roi_top, int spacing,
+             cv::Vec3b* mean) {
   const int u = cvRound(p.x()), v = cvRound(p.y()) - roi_top;
-  if (u < 1 || v < 1 || u >= bgr.cols - 1 || v >= bgr.rows - 1) return false;
+  if (u < spacing || v < spacing || u >= bgr.cols - spacing || v >= bgr.rows - spacing) {
+    return false;
+  }
   cv::Vec3i sum(0, 0, 0);
-  for (int dv = -1; dv <= 1; ++dv) {
-    for (int du = -1; du <= 1; ++du) sum += cv::Vec3i(bgr.at<cv::Vec3b>(v + dv, u + du));
+  for (int dv = -spacing; dv <= spacing; dv += spacing) {
+    for (int du = -spacing; du <= spacing; du += spacing) {
+      sum += cv::Vec3i(bgr.at<cv::Vec3b>(v + dv, u + du));
+    }
   }
   *mean = cv::Vec3b(static_cast<uchar>(sum[0] / 9), static_cast<uchar>(sum[1] / 9),
                     static_cast<uchar>(sum[2] / 9));
@@ -80,10 +85,11 @@ FloorAppearance SampleFloor(const cv::Mat& bgr, int roi_top, int step) {
 }
 
 double BoundaryScore(const cv::Mat& bgr, const FloorAppearance& floor, const MergedLine& line,
-                     int roi_top) {
+                     int roi_top, int scale) {
   const Eigen::Vector2d normal = line.line.head<2>();  // Points down (toward the floor).
   const int samples = 24;
-  const double offset = 4.0;  // Strip distance from the line, px.
+  const int spacing = std::max(1, scale);  // Patch pixel spacing, px.
+  const double offset = 4.0 * spacing;  // Strip distance from the line, px.
   // The 3x3 patches on each side of every usable sample: 9 above, then 9 below.
   std::vector<cv::Vec3b> patches;
   patches.reserve(samples * 18);
@@ -91,13 +97,14 @@ double BoundaryScore(const cv::Mat& bgr, const FloorAppearance& floor, const Mer
     const Eigen::Vector2d p = line.start + (line.end - line.start) * ((i + 0.5) / samples);
     const Eigen::Vector2d pa = p - offset * normal, pb = p + offset * normal;
     const int ua = cvRound(pa.x()), va = cvRound(pa.y()), ub = cvRound(pb.x()), vb = cvRound(pb.y());
-    if (ua < 1 || ub < 1 || ua >= bgr.cols - 1 || ub >= bgr.cols - 1 || va < roi_top + 1 ||
-        vb >= roi_top + bgr.rows - 1 || va >= roi_top + bgr.rows - 1) {
+    if (ua < spacing || ub < spacing || ua >= bgr.cols - spacing || ub >= bgr.cols - spacing ||
+        va < roi_top + spacing || vb >= roi_top + bgr.rows - spacing ||
+        va >= roi_top + bgr.rows - spacing) {
       continue;
     }
     for (const cv::Point centre : {cv::Point(ua, va - roi_top), cv::Point(ub, vb - roi_top)}) {
-      for (int dv = -1; dv <= 1; ++dv) {
-        for (int du = -1; du <= 1; ++du) {
+      for (int dv = -spacing; dv <= spacing; dv += spacing) {
+        for (int du = -spacing; du <= spacing; du += spacing) {
           patches.push_back(bgr.at<cv::Vec3b>(centre.y + dv, centre.x + du));
         }
       }
@@ -127,7 +134,8 @@ double BoundaryScore(const cv::Mat& bgr, const FloorAppearance& floor, const Mer
 }
 
 double BandContrast(const cv::Mat& bgr, const FloorAppearance& floor, const MergedLine& upper,
-                    const MergedLine& lower, int roi_top) {
+                    const MergedLine& lower, int roi_top, int scale) {
+  const int spacing = std::max(1, scale);  // Patch pixel spacing, px.
   const double u0 = std::max(upper.start.x(), lower.start.x());
   const double u1 = std::min(upper.end.x(), lower.end.x());
   if (u1 <= u0 || std::abs(lower.line.y()) < 1e-6) return -1.0;
@@ -139,10 +147,10 @@ double BandContrast(const cv::Mat& bgr, const FloorAppearance& floor, const Merg
     // The lower line's point at column u (b > 0: the line is not vertical).
     const Eigen::Vector2d p(u, -(lower.line.x() * u + lower.line.z()) / lower.line.y());
     const double gap = upper.line.dot(p.homogeneous());  // > 0: p lies below `upper`.
-    if (gap < 4.0) continue;
+    if (gap < 4.0 * spacing) continue;
     cv::Vec3b middle, below;
-    if (!Mean3x3(bgr, p - 0.5 * gap * down, roi_top, &middle) ||
-        !Mean3x3(bgr, p + 3.0 * down, roi_top, &below)) {
+    if (!Mean3x3(bgr, p - 0.5 * gap * down, roi_top, spacing, &middle) ||
+        !Mean3x3(bgr, p + 3.0 * spacing * down, roi_top, spacing, &below)) {
       continue;
     }
     pairs.push_back(middle);

@@ -31,18 +31,22 @@ FloorAppearance SampleFloor(const cv::Mat& bgr, int roi_top, int step = 2);
 // How much a line looks like the floor's upper boundary, in [0, 1]: the floor-likeness of the
 // strip just below it times the unlikeness of the strip above. Near 1 for the junction; near 0
 // for lines inside the floor (grout, reflections: floor on both sides) and on the wall (baseboard
-// tops, door bottoms: no floor below). `bgr` as for SampleFloor.
+// tops, door bottoms: no floor below). `bgr` as for SampleFloor. The strips lie 4 `scale` px
+// from the line, as 3x3 patches of pixels `scale` apart: `scale` is the junction search's
+// working scale (1, or 2, 4... when large images are halved for it), so that the probes cover
+// the same part of the scene at any resolution; a grout line's shadow, a few pixels wide in a
+// 1280-pixel image, is not taken for the wall above it.
 double BoundaryScore(const cv::Mat& bgr, const FloorAppearance& floor, const MergedLine& line,
-                     int roi_top);
+                     int roi_top, int scale = 1);
 
 // How unlike the floor just below `lower` the band between `upper` and `lower` looks: two lines
 // through one vanishing point on the same side, `upper` above (on the wall side of) `lower`. The
-// median, over samples along their common extent where the band is at least 4 px tall, of the Lab
-// distance between the band's middle and the floor 3 px below `lower` (3x3 means), over the
-// floor's spread. Large for a baseboard (its top above, the junction below); small for a tile
-// between a junction and a grout line. -1 when fewer than 6 samples are usable. `bgr` as for
-// SampleFloor.
+// median, over samples along their common extent where the band is at least 4 `scale` px tall,
+// of the Lab distance between the band's middle and the floor 3 `scale` px below `lower` (means
+// of 3x3 pixels `scale` apart), over the floor's spread. Large for a baseboard (its top above,
+// the junction below); small for a tile between a junction and a grout line. -1 when fewer than
+// 6 samples are usable. `bgr` and `scale` as for BoundaryScore.
 double BandContrast(const cv::Mat& bgr, const FloorAppearance& floor, const MergedLine& upper,
-                    const MergedLine& lower, int roi_top);
+                    const MergedLine& lower, int roi_top, int scale = 1);
 
 }  // namespace corridor

@@ -404,7 +404,7 @@ Status DetectJunctionsIn(const cv::Mat& bgr, const cv::Mat* halved,
         line.inclination_deg > max_inclination) {
       continue;
     }
-    JunctionCandidate candidate{line, BoundaryScore(roi, floor, line, roi_top)};
+    JunctionCandidate candidate{line, BoundaryScore(roi, floor, line, roi_top, scale)};
     (line.slope < 0 ? left : right).push_back(candidate);
   }
   if (left.empty() || right.empty()) {
@@ -422,7 +422,7 @@ Status DetectJunctionsIn(const cv::Mat& bgr, const cv::Mat* halved,
   if (options.baseboard_band_contrast > 0) {
     band.min_contrast = options.baseboard_band_contrast;
     band.contrast = [&](const MergedLine& upper, const MergedLine& lower) {
-      return BandContrast(roi, floor, upper, lower, roi_top);
+      return BandContrast(roi, floor, upper, lower, roi_top, scale);
     };
   }
   const SelectedPair pair =

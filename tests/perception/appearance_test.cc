@@ -54,6 +54,32 @@ TEST(AppearanceTest, TheFloorEdgeScoresHighAndLinesInsideOneSurfaceLow) {
   EXPECT_EQ(BoundaryScore(roi, floor, horizontal(10), roi_top), 0.0);
 }
 
+// A 1280-pixel image searched at half resolution (scale 2): a grout line inside the floor, a
+// light 2 px line with a 3 px dark shadow above it, 20 px below the junction. Probes 4 px from
+// the grout line's lower edge land in its shadow, which looks like the wall above a junction;
+// probes 4 scale px away see floor on both sides. The junction scores high at either scale.
+TEST(AppearanceTest, ProbesScaleWithTheWorkingResolution) {
+  const cv::Scalar wall(200, 200, 200), floor_bgr(40, 90, 150);
+  const cv::Scalar shadow(20, 30, 40), grout(170, 180, 190);
+  cv::Mat image(200, 200, CV_8UC3, wall);
+  image.rowRange(60, 200).setTo(floor_bgr);
+  image.rowRange(77, 80).setTo(shadow);
+  image.rowRange(80, 82).setTo(grout);
+  const int roi_top = 40;
+  const cv::Mat roi = image.rowRange(roi_top, image.rows);
+  const FloorAppearance floor = SampleFloor(roi, roi_top);
+  const auto horizontal = [](double v) {
+    return LineThrough(Eigen::Vector2d(20, v), Eigen::Vector2d(180, v));
+  };
+  // The grout's lower edge (row 81.5): 4 px above is row 77.5, the shadow.
+  EXPECT_GT(BoundaryScore(roi, floor, horizontal(81.5), roi_top, 1), 0.95);
+  EXPECT_LT(BoundaryScore(roi, floor, horizontal(81.5), roi_top, 2), 0.05);
+  EXPECT_GT(BoundaryScore(roi, floor, horizontal(59.5), roi_top, 1), 0.95);
+  EXPECT_GT(BoundaryScore(roi, floor, horizontal(59.5), roi_top, 2), 0.95);
+  // Scale 2 probes 8 px away with 3x3 patches 2 px apart: the wall 2-10 px above the junction.
+  EXPECT_LT(BoundaryScore(roi, floor, horizontal(52.5), roi_top, 2), 0.05);  // On the wall.
+}
+
 // A vertical line's normal points right: the floor must be on its right, the wall on its left.
 TEST(AppearanceTest, AVerticalBoundaryComparesItsLeftAndRightSides) {
   const cv::Scalar wall(200, 200, 200), floor_bgr(40, 90, 150);
