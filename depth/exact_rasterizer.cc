@@ -81,15 +81,16 @@ struct RowConstants {
   float dr0, dr_step;     // d.r (corridor axis) at u = 0, and its change per pixel.
 };
 
-using RowKernel = void (*)(const BoxModel&, const RowConstants&, int, float*);
+using RowKernel = void (*)(const BoxModel&, const RowConstants&, int, int, float*);
 
-// One row of the undistorted image. kEndWall: an end wall may hide what is beyond; kCutWalls
-// (no ceiling): wall points above max_height get 0. Bitwise, not short-circuit, operators and
-// selects: no branches, so the loop vectorises.
+// Pixels [first, last) of one row of the undistorted image. kEndWall: an end wall may hide what is
+// beyond; kCutWalls (no ceiling): wall points above max_height get 0. Bitwise, not short-circuit,
+// operators and selects: no branches, so the loop vectorises.
 template <bool kEndWall, bool kCutWalls>
-CORRIDOR_ALWAYS_INLINE inline void RowBody(const BoxModel& box, const RowConstants& row, int width, float* out) {
+CORRIDOR_ALWAYS_INLINE inline void RowBody(const BoxModel& box, const RowConstants& row, int first,
+                                           int last, float* out) {
   const float inf = std::numeric_limits<float>::infinity();
-  for (int u = 0; u < width; ++u) {
+  for (int u = first; u < last; ++u) {
     const float mr = row.mr0 + row.mr_step * u;
     const float wall_distance = mr < 0 ? box.d_left : box.d_right;
     const float z_wall = wall_distance / std::abs(mr);  // +inf when the ray is parallel.
@@ -114,8 +115,8 @@ CORRIDOR_ALWAYS_INLINE inline void RowBody(const BoxModel& box, const RowConstan
 }
 
 template <bool kEndWall, bool kCutWalls>
-void Row(const BoxModel& box, const RowConstants& row, int width, float* out) {
-  RowBody<kEndWall, kCutWalls>(box, row, width, out);
+void Row(const BoxModel& box, const RowConstants& row, int first, int last, float* out) {
+  RowBody<kEndWall, kCutWalls>(box, row, first, last, out);
 }
 
 #ifdef CORRIDOR_AVX2_VARIANTS
@@ -123,8 +124,8 @@ void Row(const BoxModel& box, const RowConstants& row, int width, float* out) {
 // as in the baseline loop).
 template <bool kEndWall, bool kCutWalls>
 __attribute__((target("avx2"))) void RowAvx2(const BoxModel& box, const RowConstants& row,
-                                             int width, float* out) {
-  RowBody<kEndWall, kCutWalls>(box, row, width, out);
+                                             int first, int last, float* out) {
+  RowBody<kEndWall, kCutWalls>(box, row, first, last, out);
 }
 #endif
 
@@ -139,6 +140,36 @@ RowKernel ChooseRowKernel(bool end_wall, bool cut_walls, bool allow_avx2) {
 #endif
   if (end_wall) return cut_walls ? Row<true, true> : Row<true, false>;
   return cut_walls ? Row<false, true> : Row<false, false>;
+}
+
+// The pixels [*begin, *end) of a row where the floor or ceiling plane (depth row.z_plane, no end
+// wall) is nearer than both walls by a safe margin, so that RowBody would pick the plane there:
+// the walls' depth d / |m.r| exceeds z_plane wherever -d_left / z_plane < m.r < d_right / z_plane,
+// and m.r is affine in u. The bounds are pulled in by 1e-4 relatively and by far more than the
+// float rounding of m.r, and by a pixel at each end; an empty span when in doubt.
+void PlaneSpan(const BoxModel& box, const RowConstants& row, int width, int* begin, int* end) {
+  *begin = *end = 0;
+  const double z = row.z_plane;
+  if (!(z > 0) || !std::isfinite(z)) return;
+  const double mr0 = row.mr0, step = row.mr_step;
+  const double slack = 1e-5 * (std::abs(mr0) + std::abs(step) * width);
+  const double lo = -box.d_left / z * (1 - 1e-4) + slack;
+  const double hi = box.d_right / z * (1 - 1e-4) - slack;
+  if (!(lo < hi)) return;
+  double u_lo, u_hi;  // m.r in [lo, hi] for u in [u_lo, u_hi].
+  if (std::abs(step) < 1e-12) {
+    if (mr0 < lo || mr0 > hi) return;
+    u_lo = 0;
+    u_hi = width;
+  } else {
+    u_lo = ((step > 0 ? lo : hi) - mr0) / step;
+    u_hi = ((step > 0 ? hi : lo) - mr0) / step;
+  }
+  const double first = std::max(0.0, std::ceil(u_lo) + 1);
+  const double last = std::min(1.0 * width, std::floor(u_hi));
+  if (!(first < last)) return;
+  *begin = static_cast<int>(first);
+  *end = static_cast<int>(last);
 }
 
 }  // namespace
@@ -186,7 +217,17 @@ Status ExactRasterizer::Render(const CorridorGeometry& geometry, const Camera& c
     row.mr_step = box.m_x * inv_fx;
     row.dr0 = box.d_x * x0 + box.d_y * y + box.d_z;  // The axis' d.r, affine in u too.
     row.dr_step = box.d_x * inv_fx;
-    kernel(box, row, camera.image_width, depth->ptr<float>(v));
+    float* out = depth->ptr<float>(v);
+    int begin = 0, end = 0;
+    if (options_.plane_spans && !end_wall) PlaneSpan(box, row, camera.image_width, &begin, &end);
+    if (begin < end) {
+      // The plane is nearest: RowBody's depth there is z_plane, or 0 beyond the range.
+      std::fill(out + begin, out + end, row.z_plane <= box.max_range ? row.z_plane : 0.0f);
+      kernel(box, row, 0, begin, out);
+      kernel(box, row, end, camera.image_width, out);
+    } else {
+      kernel(box, row, 0, camera.image_width, out);
+    }
   }
   return Status::Ok();
 }

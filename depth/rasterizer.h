@@ -27,6 +27,7 @@ struct RasterizerOptions {
   bool use_ceiling = true;   // Render the ceiling plane when the geometry has a ceiling height.
   int paper_planes = 96;     // "paper": number of depth planes between the nearest visible floor and max_range.
   bool use_avx2 = true;      // "exact": AVX2 rows where the CPU has it (the same depths as the baseline rows; false = baseline).
+  bool plane_spans = true;   // "exact": each row's run where the floor or ceiling is surely nearest is filled without per-pixel divisions (the same depths; false = every pixel divides).
 
   bool Check(std::string* why) const;
 };
