@@ -165,6 +165,7 @@ void PlaneSpan(const BoxModel& box, const RowConstants& row, int width, int* beg
     u_lo = ((step > 0 ? lo : hi) - mr0) / step;
     u_hi = ((step > 0 ? hi : lo) - mr0) / step;
   }
+  if (!(u_lo <= u_hi)) return;  // Also NaN.
   const double first = std::max(0.0, std::ceil(u_lo) + 1);
   const double last = std::min(1.0 * width, std::floor(u_hi));
   if (!(first < last)) return;

@@ -13,22 +13,24 @@ namespace {
 
 // Rows of edges computed beyond the band, for the blur and Canny's gradients and hysteresis.
 constexpr int kBandMargin = 8;
+
 }  // namespace
 
 int OrientationBin(int gx, int gy) {
-  // Turned into [0, 180) degrees: an edge and its reverse are the same edge (gy = 0 with gx < 0
-  // stays at 180 degrees, the last bin, as atan2 puts it).
-  if (gy < 0) {
-    gx = -gx;
-    gy = -gy;
+  // Turned into [0, 180] degrees: an edge and its reverse are the same edge (gy = 0 with gx < 0
+  // stays at 180 degrees, the last bin, as atan2 puts it). In double: no integer overflow.
+  double x = gx, y = gy;
+  if (y < 0) {
+    x = -x;
+    y = -y;
   }
   // The bin edges' tangents: tan(22.5 deg) = sqrt(2) - 1, tan(67.5 deg) = sqrt(2) + 1; at 45 and
-  // 135 degrees the comparison is exact in integers.
+  // 135 degrees the comparison is exact (integers in double).
   constexpr double kTan22 = 0.41421356237309504880, kTan67 = 2.41421356237309504880;
-  const double x = std::abs(gx), y = gy;
-  if (gx > 0) return y < kTan22 * x ? 0 : (y < x ? 1 : (y < kTan67 * x ? 2 : 3));
-  if (gx == 0) return gy == 0 ? 0 : 4;
-  return y > kTan67 * x ? 4 : (y > x ? 5 : (y > kTan22 * x ? 6 : 7));
+  if (x > 0) return y < kTan22 * x ? 0 : (y < x ? 1 : (y < kTan67 * x ? 2 : 3));
+  if (x == 0) return y == 0 ? 0 : 4;
+  const double ax = -x;
+  return y > kTan67 * ax ? 4 : (y > ax ? 5 : (y > kTan22 * ax ? 6 : 7));
 }
 
 bool ColorCannyEdges(const cv::Mat& bgr, int from, int to, cv::Mat* dx, cv::Mat* dy,
