@@ -4,8 +4,9 @@
 Usage: python3 scripts/benchmark_table.py FILE.json
 
 Reads the EndToEnd/<config>/<width>x<height> benchmarks and prints, per size, the median time per
-frame of every config (the mean when the run had no repetitions), in milliseconds, and the
-ratios paper/best and best/floor. Standard library only.
+frame of every config (the mean when the run had no repetitions), in milliseconds, the ratios
+paper/best and best/floor, and best's width error on the timed frame (its width_error_mm
+counter): a fast answer is only worth its time if it is right. Standard library only.
 """
 
 import json
@@ -25,6 +26,7 @@ def load_times(path):
         data = json.load(f)
     runs = defaultdict(list)      # Individual iterations-runs.
     aggregates = {}               # (key, aggregate name) -> ms, when Google Benchmark wrote them.
+    width_errors = {}             # key -> the width_error_mm counter (the same in every run).
     for b in data.get("benchmarks", []):
         if b.get("error_occurred"):
             continue
@@ -33,6 +35,9 @@ def load_times(path):
             continue
         key = (match.group(1), (int(match.group(2)), int(match.group(3))))
         ms = b["real_time"] * TO_MS[b.get("time_unit", "ns")]
+        # Not from the stddev or cv aggregates, whose counters are spreads.
+        if "width_error_mm" in b and b.get("aggregate_name", "median") in ("median", "mean"):
+            width_errors[key] = b["width_error_mm"]
         if b.get("run_type") == "aggregate":
             aggregates[(key, b.get("aggregate_name"))] = ms
         else:
@@ -49,7 +54,7 @@ def load_times(path):
             times[key] = statistics.mean(runs[key])
     repeated = any(len(v) > 1 for v in runs.values()) or any(
         a == "median" for _, a in aggregates)
-    return times, repeated, data.get("context", {})
+    return times, width_errors, repeated, data.get("context", {})
 
 
 def ratio(a, b):
@@ -60,11 +65,15 @@ def fmt(ms):
     return "-" if ms is None else f"{ms:.2f}"
 
 
+def fmt_mm(mm):
+    return "-" if mm is None else f"{mm:.0f}"
+
+
 def main(argv):
     if len(argv) != 2:
         print(__doc__, file=sys.stderr)
         return 2
-    times, repeated, context = load_times(argv[1])
+    times, width_errors, repeated, context = load_times(argv[1])
     if not times:
         print(f"{argv[1]}: no EndToEnd/<config>/<width>x<height> results", file=sys.stderr)
         return 1
@@ -75,13 +84,13 @@ def main(argv):
     print(f"Time per frame, ms ({stat} of real time; {context.get('num_cpus', '?')} CPUs "
           f"at {context.get('mhz_per_cpu', '?')} MHz, {context.get('date', '')})")
     print()
-    print("| size | " + " | ".join(configs) + " | paper/best | best/floor |")
-    print("|---|" + "---:|" * (len(configs) + 2))
+    print("| size | " + " | ".join(configs) + " | paper/best | best/floor | best's width error, mm |")
+    print("|---|" + "---:|" * (len(configs) + 3))
     for size in sizes:
         row = [times.get((c, size)) for c in configs]
         paper, best, floor = (times.get((c, size)) for c in MAIN_CONFIGS)
         print(f"| {size[0]}x{size[1]} | " + " | ".join(fmt(t) for t in row) +
-              f" | {ratio(paper, best)} | {ratio(best, floor)} |")
+              f" | {ratio(paper, best)} | {ratio(best, floor)} | {fmt_mm(width_errors.get(('best', size)))} |")
     return 0
 
 
