@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
-#include <cstring>
 #include <sstream>
 #include <vector>
 
@@ -11,6 +9,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "perception/appearance.h"
+#include "perception/edge_scan.h"
 #include "perception/floor_texture.h"
 #include "perception/junction_selector.h"
 #include "perception/line_segments.h"
@@ -355,23 +354,13 @@ Status DetectJunctionsIn(const cv::Mat& bgr, const cv::Mat* halved,
       segment[k] = static_cast<float>(scale * segment[k] + (k % 2 == 1 ? crop_top : 0));
     }
   }
-  // Edge pixels in full-image coordinates, for the refits, in row-major order (as
-  // cv::findNonZero lists them; the map is mostly empty, so eight zero bytes are skipped at once).
+  // Edge pixels in full-image coordinates, for the refits, in row-major order.
   const auto edge_points = [&]() {
     std::vector<Eigen::Vector2d> points;
     points.reserve(static_cast<size_t>(cv::countNonZero(found.edges)));
-    for (int v = 0; v < found.edges.rows; ++v) {
-      const uchar* e = found.edges.ptr<uchar>(v);
-      const double y = scale * (v + work_roi_top) + crop_top;
-      for (int u = 0; u < found.edges.cols; ++u) {
-        uint64_t eight = 0;
-        if (u + 8 <= found.edges.cols && (std::memcpy(&eight, e + u, 8), eight == 0)) {
-          u += 7;
-          continue;
-        }
-        if (e[u] != 0) points.emplace_back(scale * u, y);
-      }
-    }
+    ForEachEdgePixel(found.edges, [&](int u, int v) {
+      points.emplace_back(scale * u, scale * (v + work_roi_top) + crop_top);
+    });
     return points;
   };
   const double edge_density =

@@ -4,9 +4,10 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
-#include <cstring>
 
 #include <opencv2/core.hpp>
+
+#include "perception/edge_scan.h"
 #ifdef __SSE2__
 #include <emmintrin.h>
 #endif
@@ -176,23 +177,11 @@ void OrientedHoughSegments(const cv::Mat& edges, const cv::Mat& dx, const cv::Ma
   bins.create(height, width, CV_8U);
   std::vector<cv::Point>& pool = scratch.pool;
   pool.clear();
-  for (int v = 0; v < height; ++v) {
-    const uchar* e = edges.ptr<uchar>(v);
-    const short* gx = dx.ptr<short>(v);
-    const short* gy = dy.ptr<short>(v);
-    for (int u = 0; u < width; ++u) {
-      // Edge maps are mostly empty: skip eight zero bytes at a time.
-      uint64_t eight = 0;
-      if (u + 8 <= width && (std::memcpy(&eight, e + u, 8), eight == 0)) {
-        u += 7;
-        continue;
-      }
-      if (e[u] == 0) continue;
-      state.at<uchar>(v, u) = kWaiting;
-      bins.at<uchar>(v, u) = static_cast<uchar>(GradientBin(gx[u], gy[u]));
-      pool.emplace_back(u, v);
-    }
-  }
+  ForEachEdgePixel(edges, [&](int u, int v) {
+    state.at<uchar>(v, u) = kWaiting;
+    bins.at<uchar>(v, u) = static_cast<uchar>(GradientBin(dx.at<short>(v, u), dy.at<short>(v, u)));
+    pool.emplace_back(u, v);
+  });
   cv::RNG rng(0xffffffffffffffffULL);  // Fixed: the same segments for the same image.
   const int max_gap =
       options.max_gap > 0 ? static_cast<int>(std::min(options.max_gap, 1.0 * (width + height)))
