@@ -23,14 +23,12 @@ struct BenchFrame {
   synth::Frame frame;  // bgr and its ground truth.
 };
 
-// The paper camera (fx = fy = 250 at 420 px wide) scaled to width x height.
+// The paper camera (fx = fy = 250 at 420 px wide) scaled by the width, at width x height: the
+// paper's horizontal field of view at any aspect ratio.
 inline Camera ScaledPaperCamera(int width, int height, double mount_height) {
-  Camera camera = synth::PaperCamera(mount_height);
-  const double scale = width / 420.0;
+  Camera camera = synth::PaperCamera(mount_height, width / 420.0);
   camera.image_width = width;
   camera.image_height = height;
-  camera.fx = camera.fy = camera.fx * scale;
-  camera.cx = 0.5 * (width - 1);
   camera.cy = 0.5 * (height - 1);
   return camera;
 }
