@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "synth/presets.h"
+#include "tests/support/camera_expect.h"
 
 namespace corridor {
 namespace {
@@ -13,12 +14,7 @@ namespace {
 // principal point (209.5, 179.5), no distortion.
 Camera PaperCamera() {
   const Camera camera = synth::PaperCamera(0.66);
-  EXPECT_EQ(camera.image_width, 420);
-  EXPECT_EQ(camera.image_height, 360);
-  EXPECT_EQ(camera.fx, 250.0);
-  EXPECT_EQ(camera.fy, 250.0);
-  EXPECT_EQ(camera.cx, 209.5);
-  EXPECT_EQ(camera.cy, 179.5);
+  testing_util::ExpectPinhole(camera, 420, 360, 250.0, 250.0, 209.5, 179.5);
   EXPECT_FALSE(camera.HasDistortion());
   return camera;
 }

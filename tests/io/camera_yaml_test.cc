@@ -7,6 +7,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "tests/io/test_dir.h"
+#include "tests/support/camera_expect.h"
 
 namespace corridor {
 namespace {
@@ -46,12 +47,7 @@ TEST(CameraYamlTest, ReadsRosCameraInfo) {
   TestDir dir;
   Camera c;
   ASSERT_TRUE(ReadText(dir, RosYaml(), &c).ok());
-  EXPECT_EQ(c.image_width, 640);
-  EXPECT_EQ(c.image_height, 480);
-  EXPECT_EQ(c.fx, 500.0);
-  EXPECT_EQ(c.fy, 510.0);
-  EXPECT_EQ(c.cx, 319.5);
-  EXPECT_EQ(c.cy, 239.5);
+  testing_util::ExpectPinhole(c, 640, 480, 500.0, 510.0, 319.5, 239.5);
   EXPECT_EQ(c.distortion[0], 0.1);
   EXPECT_EQ(c.distortion[1], -0.2);
   EXPECT_EQ(c.distortion[2], 0.001);

@@ -7,6 +7,7 @@
 
 #include "io/dataset.h"
 #include "io/image_io.h"
+#include "tests/support/camera_expect.h"
 
 namespace corridor {
 namespace synth {
@@ -40,12 +41,8 @@ TEST(PresetsTest, ScaledPaperPresetKeepsTheViews) {
   ASSERT_EQ(scaled.size(), plain.size());
   for (size_t i = 0; i < plain.size(); ++i) {
     const Camera& c = scaled[i].camera;
-    EXPECT_EQ(c.image_width, 630);
-    EXPECT_EQ(c.image_height, 540);
-    EXPECT_DOUBLE_EQ(c.fx, 375.0);
-    EXPECT_DOUBLE_EQ(c.fy, 375.0);
-    EXPECT_DOUBLE_EQ(c.cx, 314.5);  // (630 - 1) / 2: the image centre, as 209.5 is at 420.
-    EXPECT_DOUBLE_EQ(c.cy, 269.5);
+    // (630 - 1) / 2: the image centre, as 209.5 is at 420.
+    testing_util::ExpectPinhole(c, 630, 540, 375.0, 375.0, 314.5, 269.5);
     // Half the horizontal field of view, atan(210 / 250), unchanged.
     EXPECT_NEAR(std::atan2(c.image_width / 2.0, c.fx), std::atan2(210.0, 250.0), 1e-12);
     EXPECT_EQ(c.mount_height, plain[i].camera.mount_height);
@@ -54,10 +51,7 @@ TEST(PresetsTest, ScaledPaperPresetKeepsTheViews) {
     ASSERT_EQ(scaled[i].poses.size(), plain[i].poses.size());
     EXPECT_EQ(scaled[i].poses[7].yaw, plain[i].poses[7].yaw);
   }
-  const Camera unscaled = PaperCamera(0.66);
-  EXPECT_DOUBLE_EQ(unscaled.cx, 209.5);
-  EXPECT_DOUBLE_EQ(unscaled.cy, 179.5);
-  EXPECT_DOUBLE_EQ(unscaled.fx, 250.0);
+  testing_util::ExpectPinhole(PaperCamera(0.66), 420, 360, 250.0, 250.0, 209.5, 179.5);
 }
 
 TEST(PresetsTest, WriteSceneProducesTheDatasetLayout) {
