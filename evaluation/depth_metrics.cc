@@ -113,7 +113,7 @@ DepthMetrics AverageDepthMetrics(const std::vector<DepthMetrics>& per_image) {
   return m;
 }
 
-double RelativeWidthError(double estimated, double truth) {
+double RelativeError(double estimated, double truth) {
   if (!std::isfinite(truth) || !(truth > 0)) return kNaN;
   return std::abs(estimated - truth) / truth;
 }

@@ -36,7 +36,8 @@ DepthMetrics ComputeDepthMetrics(const cv::Mat& pred, const cv::Mat& gt, double 
 // num_images is per_image.size().
 DepthMetrics AverageDepthMetrics(const std::vector<DepthMetrics>& per_image);
 
-// |estimated - truth| / truth, as in the paper's Table 1. NaN when truth is not positive.
-double RelativeWidthError(double estimated, double truth);
+// |estimated - truth| / truth: the width's, as in the paper's Table 1, and the ceiling height's. NaN
+// when truth is not positive.
+double RelativeError(double estimated, double truth);
 
 }  // namespace corridor

@@ -181,13 +181,13 @@ TEST(DepthMetricsTest, AverageOfNothingIsNaN) {
   EXPECT_EQ(empty.num_images, 0);
 }
 
-TEST(DepthMetricsTest, RelativeWidthError) {
-  EXPECT_DOUBLE_EQ(RelativeWidthError(1.5, 2.0), 0.25);  // |1.5 - 2| / 2.
-  EXPECT_DOUBLE_EQ(RelativeWidthError(2.5, 2.0), 0.25);  // |2.5 - 2| / 2.
-  EXPECT_DOUBLE_EQ(RelativeWidthError(2.0, 2.0), 0.0);
-  EXPECT_TRUE(std::isnan(RelativeWidthError(2.0, 0.0)));
-  EXPECT_TRUE(std::isnan(RelativeWidthError(2.0, -1.0)));
-  EXPECT_TRUE(std::isnan(RelativeWidthError(kNaN, 2.0)));
+TEST(DepthMetricsTest, RelativeError) {
+  EXPECT_DOUBLE_EQ(RelativeError(1.5, 2.0), 0.25);  // |1.5 - 2| / 2.
+  EXPECT_DOUBLE_EQ(RelativeError(2.5, 2.0), 0.25);  // |2.5 - 2| / 2.
+  EXPECT_DOUBLE_EQ(RelativeError(2.0, 2.0), 0.0);
+  EXPECT_TRUE(std::isnan(RelativeError(2.0, 0.0)));
+  EXPECT_TRUE(std::isnan(RelativeError(2.0, -1.0)));
+  EXPECT_TRUE(std::isnan(RelativeError(kNaN, 2.0)));
 }
 
 }  // namespace

@@ -59,7 +59,7 @@ GroupSummary Summarize(const std::string& name, const std::vector<FrameRecord>& 
     if (f.has_estimate) est_width.push_back(f.estimate.width);
     if (f.has_truth) true_width.push_back(f.truth.width);
     if (f.has_estimate && f.has_truth) {
-      frame_width_error.push_back(RelativeWidthError(f.estimate.width, f.truth.width));
+      frame_width_error.push_back(RelativeError(f.estimate.width, f.truth.width));
       yaw.push_back(std::abs(f.estimate.yaw - f.truth.yaw));
       pitch.push_back(std::abs(f.estimate.pitch - f.truth.pitch));
       offset.push_back(std::abs(f.estimate.offset - f.truth.offset));
@@ -67,9 +67,8 @@ GroupSummary Summarize(const std::string& name, const std::vector<FrameRecord>& 
     if (f.has_truth && f.ceiling_visible) {
       ++g.ceiling.num_visible;
       if (f.ceiling_estimated) {
-        // Visible implies a true ceiling above the camera, so the division is safe.
-        const double error =
-            std::abs(f.estimate.ceiling_height - f.truth.ceiling_height) / f.truth.ceiling_height;
+        // Visible implies a true ceiling above the camera: the error is a number.
+        const double error = RelativeError(f.estimate.ceiling_height, f.truth.ceiling_height);
         ceiling_error.push_back(error);
         if (error <= kCeilingTolerance) ++g.ceiling.num_within;
       }
@@ -84,7 +83,7 @@ GroupSummary Summarize(const std::string& name, const std::vector<FrameRecord>& 
   for (const auto& metrics : per_cap) g.depth.push_back(AverageDepthMetrics(metrics));
   g.width.estimated = MeanOf(est_width);
   g.width.truth = MeanOf(true_width);
-  g.width.rel_error = RelativeWidthError(g.width.estimated, g.width.truth);
+  g.width.rel_error = RelativeError(g.width.estimated, g.width.truth);
   g.width.mean_frame_rel_error = MeanOf(frame_width_error);
   g.width.num_estimated = static_cast<int>(est_width.size());
   g.width.num_truth = static_cast<int>(true_width.size());

@@ -121,7 +121,7 @@ std::string Frame(const FrameRecord& f, const std::vector<double>& caps) {
   o.Add("estimate", f.has_estimate ? Geometry(f.estimate) : "null");
   o.Add("truth", f.has_truth ? Geometry(f.truth) : "null");
   o.Number("width_rel_error", f.has_estimate && f.has_truth
-                                  ? RelativeWidthError(f.estimate.width, f.truth.width)
+                                  ? RelativeError(f.estimate.width, f.truth.width)
                                   : kUnknown);
   o.Bool("ceiling_visible", f.ceiling_visible).Bool("ceiling_estimated", f.ceiling_estimated);
   for (size_t c = 0; c < caps.size() && c < f.metrics.size(); ++c) {

@@ -115,7 +115,7 @@ std::string ReportCsv(const std::vector<EvalReport>& configs) {
       AddGeometry(f.has_estimate, f.estimate, &row);
       AddGeometry(f.has_truth, f.truth, &row);
       row.push_back(f.has_estimate && f.has_truth
-                        ? CsvNumber(RelativeWidthError(f.estimate.width, f.truth.width))
+                        ? CsvNumber(RelativeError(f.estimate.width, f.truth.width))
                         : "");
       row.push_back(f.ceiling_estimated ? CsvNumber(f.estimate.ceiling_height) : "");
       row.push_back(f.has_truth && f.truth.HasCeiling() ? CsvNumber(f.truth.ceiling_height) : "");
