@@ -147,6 +147,8 @@ bool CeilingDetectorOptions::Check(std::string* why) const {
     reason = "ceiling samples need 0 < near_distance < far_distance and >= 10 samples";
   } else if (!(min_support > 0 && min_support <= 1)) {
     reason = "min_support must be in (0, 1]";
+  } else if (!(min_counted_fraction > 0 && min_counted_fraction <= 1)) {
+    reason = "min_counted_fraction must be in (0, 1]";
   }
   if (reason.empty()) return true;
   if (why != nullptr) *why = reason;
@@ -173,9 +175,12 @@ Status DetectCeiling(const cv::Mat& bgr, const Camera& camera, const CorridorGeo
 
   double best_score = 0, best_left = 0, best_right = 0;
   size_t best = 0;
+  LineHits best_hits[2];
   for (size_t k = 0; k < lines.heights.size(); ++k) {
-    const double left = OrientedLineSupport(lines.Line(k, 0), lines.samples, edges);
-    const double right = OrientedLineSupport(lines.Line(k, 1), lines.samples, edges);
+    const LineHits hits[2] = {OrientedLineHits(lines.Line(k, 0), lines.samples, edges),
+                              OrientedLineHits(lines.Line(k, 1), lines.samples, edges)};
+    const double left = hits[0].Fraction(lines.samples / 2);
+    const double right = hits[1].Fraction(lines.samples / 2);
     const double support[2] = {left, right};
     for (int side = 0; side < 2; ++side) {
       if (support[side] > estimate->side_support[side]) {
@@ -189,8 +194,16 @@ Status DetectCeiling(const cv::Mat& bgr, const Camera& camera, const CorridorGeo
       best = k;
       best_left = left;
       best_right = right;
+      best_hits[0] = hits[0];
+      best_hits[1] = hits[1];
     }
   }
+  // The search above compares heights by the fraction of at least half the samples; whether the
+  // chosen lines are there is judged on the samples in view (at least min_counted_fraction).
+  const int counted = std::max(
+      1, static_cast<int>(std::lround(o.min_counted_fraction * lines.samples)));
+  best_left = best_hits[0].Fraction(counted);
+  best_right = best_hits[1].Fraction(counted);
   estimate->left_support = best_left;
   estimate->right_support = best_right;
   if (std::max(best_left, best_right) < o.min_support) {

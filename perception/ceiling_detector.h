@@ -19,6 +19,7 @@ struct CeilingDetectorOptions {
   double far_distance = 30.0;      // ... to this one.
   int samples = 80;                // Samples per junction line.
   double min_support = 0.35;       // Fraction of a line's visible samples on edges to accept it.
+  double min_counted_fraction = 0.25;  // ... counting at least this fraction of `samples` as visible (a high ceiling, or a narrow vertical field of view, shows its junction only from a few metres on).
 
   bool Check(std::string* why) const;
 };
@@ -26,13 +27,13 @@ struct CeilingDetectorOptions {
 struct CeilingEstimate {
   bool found = false;        // True when at least one ceiling/wall junction was seen.
   double height = 0;         // H_c, m above the floor (valid when found).
-  double left_support = 0;   // Fraction of the left junction's visible samples on edges.
+  double left_support = 0;   // Fraction of the left junction's visible samples on edges (at least min_counted_fraction of the samples counted).
   double right_support = 0;  // Same for the right one.
   int points = 0;            // Edge pixels whose rays gave the robust (median) estimate.
   // Each side searched alone: the height whose junction on that wall best follows the edges, and
   // its support. A wrong wall distance scales its side's height, so the two then disagree.
   double side_height[2] = {0, 0};   // Left, right: H_c, m (0 when the side has no line).
-  double side_support[2] = {0, 0};  // Left, right: the support of that line.
+  double side_support[2] = {0, 0};  // Left, right: the support of that line (of at least half the samples, as the search counts).
   std::string reason;        // Why nothing was found.
 };
 

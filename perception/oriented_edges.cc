@@ -78,7 +78,8 @@ OrientedEdges ComputeOrientedEdges(const cv::Mat& bgr, int top, int bottom) {
   return out;
 }
 
-double OrientedLineSupport(const cv::Point* line, int samples, const OrientedEdges& edges) {
+LineHits OrientedLineHits(const cv::Point* line, int samples, const OrientedEdges& edges) {
+  LineHits out;
   const int rows = edges.near.rows;
   const auto inside = [&](const cv::Point& p) {
     return p.x >= 0 && p.x < edges.near.cols && p.y >= edges.top && p.y < edges.top + rows;
@@ -90,7 +91,8 @@ double OrientedLineSupport(const cv::Point* line, int samples, const OrientedEdg
     last = i;
     ++visible;
   }
-  if (visible < 8) return 0.0;
+  out.visible = visible;
+  if (visible < 8) return out;
   // The line's normal, from its two visible ends (straight up to the lens distortion).
   const cv::Point d = line[last] - line[first];
   const int bin = OrientationBin(-d.y, d.x);
@@ -103,7 +105,17 @@ double OrientedLineSupport(const cv::Point* line, int samples, const OrientedEdg
     if (!inside(line[i])) continue;
     hits += (edges.near.ptr<uchar>(line[i].y - edges.top)[line[i].x] & mask) != 0;
   }
-  return static_cast<double>(hits) / std::max(visible, samples / 2);
+  out.hits = hits;
+  return out;
+}
+
+double LineHits::Fraction(int at_least) const {
+  if (visible < 8) return 0.0;
+  return static_cast<double>(hits) / std::max(visible, at_least);
+}
+
+double OrientedLineSupport(const cv::Point* line, int samples, const OrientedEdges& edges) {
+  return OrientedLineHits(line, samples, edges).Fraction(samples / 2);
 }
 
 }  // namespace corridor

@@ -43,4 +43,13 @@ OrientedEdges ComputeOrientedEdges(const cv::Mat& bgr, int top, int bottom);
 // than 8 visible samples.
 double OrientedLineSupport(const cv::Point* line, int samples, const OrientedEdges& edges);
 
+// The counts behind OrientedLineSupport.
+struct LineHits {
+  int hits = 0;     // Visible samples with an edge along the line within 1 px (0 below 8 visible).
+  int visible = 0;  // Samples inside the band.
+  // hits / max(visible, at_least); 0 with fewer than 8 visible samples.
+  double Fraction(int at_least) const;
+};
+LineHits OrientedLineHits(const cv::Point* line, int samples, const OrientedEdges& edges);
+
 }  // namespace corridor

@@ -2,6 +2,8 @@
 // true ceiling height; and no ceiling where the image shows none.
 #include "perception/ceiling_detector.h"
 
+#include <cmath>
+
 #include <gtest/gtest.h>
 #include <opencv2/imgproc.hpp>
 
@@ -69,6 +71,46 @@ TEST(CeilingDetectorTest, FindsAColourOnlyCeilingJunction) {
   EXPECT_NEAR(estimate.height, preset.scene.ceiling_height, 0.03 * preset.scene.ceiling_height);
 }
 
+// A 3.4 m ceiling under a 16:9 image (the paper camera's rows cut to 236): each junction comes into
+// view only a few metres ahead, so most of the searched samples (from 1 m) are out of the image.
+TEST(CeilingDetectorTest, FindsAHighCeilingSeenOnlyFromAFewMetres) {
+  int checked = 0;
+  for (const auto& preset : synth::PaperPreset()) {
+    if (preset.name.find("_E") == std::string::npos) continue;
+    synth::SceneOptions options = preset.scene;
+    options.ceiling_height = 3.4;
+    const synth::CorridorScene scene = synth::BuildScene(options);
+    Camera camera = preset.camera;
+    camera.image_height = 236;
+    camera.cy = 117.5;
+    synth::Frame frame;
+    ASSERT_TRUE(synth::RenderFrame(scene, camera, preset.poses[4], &frame).ok());
+    const CorridorGeometry& g = frame.truth;
+    // The premise: the nearest point of either junction in view is at least 4 m ahead.
+    const CorridorRotation<double> r(g.pitch, g.yaw);
+    double nearest = 1e9;
+    for (const double x : {-g.LeftDistance(), g.RightDistance()}) {
+      for (double z = 1.0; z <= 30.0; z += 0.05) {
+        const Vec3<double> p = r.ToCamera({x, g.camera_height - options.ceiling_height, z});
+        const Eigen::Vector2d uv = camera.Project({p.x, p.y, p.z});
+        if (p.z > 0 && uv.x() >= 0 && uv.x() < camera.image_width && uv.y() >= 0 &&
+            uv.y() < camera.image_height) {
+          nearest = std::min(nearest, z);
+          break;
+        }
+      }
+    }
+    ASSERT_GT(nearest, 4.0) << preset.name;
+    CeilingEstimate estimate;
+    ASSERT_TRUE(DetectCeiling(frame.bgr, camera, g, CeilingDetectorOptions(), &estimate).ok());
+    ASSERT_TRUE(estimate.found) << preset.name << ": " << estimate.reason;
+    EXPECT_NEAR(estimate.height, options.ceiling_height, 0.03 * options.ceiling_height)
+        << preset.name;
+    ++checked;
+  }
+  EXPECT_EQ(checked, 6);
+}
+
 TEST(CeilingDetectorTest, NoCeilingInAFeaturelessUpperImage) {
   const Camera camera = synth::PaperCamera(0.66);
   cv::Mat image(camera.image_height, camera.image_width, CV_8UC3, cv::Scalar(180, 180, 180));
@@ -89,6 +131,12 @@ TEST(CeilingDetectorTest, RejectsBadOptionsAndImages) {
   o.max_height = 1.0;
   std::string why;
   EXPECT_FALSE(o.Check(&why));
+  for (const double fraction : {0.0, 1.5, std::nan("")}) {
+    CeilingDetectorOptions counted;
+    counted.min_counted_fraction = fraction;
+    EXPECT_FALSE(counted.Check(&why)) << fraction;
+    EXPECT_NE(why.find("min_counted_fraction"), std::string::npos) << why;
+  }
   CeilingEstimate estimate;
   CorridorGeometry g;
   EXPECT_EQ(DetectCeiling(cv::Mat(), synth::PaperCamera(0.66), g, CeilingDetectorOptions(), &estimate)
