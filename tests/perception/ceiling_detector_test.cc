@@ -34,6 +34,28 @@ TEST(CeilingDetectorTest, FindsTheCeilingHeightOfGeneratedCorridors) {
   EXPECT_EQ(checked, 6);
 }
 
+// Issue 5's ceiling criterion for the search itself: given the walls, every paper-preset scene
+// (the hard ones too: clutter, doors, glossy floors), every third frame, within 3%.
+TEST(CeilingDetectorTest, EveryPaperSceneWithinThreePercentGivenTheWalls) {
+  int checked = 0;
+  for (const auto& preset : synth::PaperPreset()) {
+    const synth::CorridorScene scene = synth::BuildScene(preset.scene);
+    for (size_t i = 0; i < preset.poses.size(); i += 3) {
+      synth::Frame frame;
+      ASSERT_TRUE(synth::RenderFrame(scene, preset.camera, preset.poses[i], &frame).ok());
+      CeilingEstimate estimate;
+      ASSERT_TRUE(DetectCeiling(frame.bgr, preset.camera, frame.truth, CeilingDetectorOptions(),
+                                &estimate)
+                      .ok());
+      ASSERT_TRUE(estimate.found) << preset.name << " frame " << i << ": " << estimate.reason;
+      EXPECT_NEAR(estimate.height, preset.scene.ceiling_height, 0.03 * preset.scene.ceiling_height)
+          << preset.name << " frame " << i;
+      ++checked;
+    }
+  }
+  EXPECT_EQ(checked, 45);
+}
+
 // A green wall under a grey ceiling of the same brightness: the junction is a colour edge only.
 TEST(CeilingDetectorTest, FindsAColourOnlyCeilingJunction) {
   const synth::ScenePreset preset = synth::PaperPreset().front();
