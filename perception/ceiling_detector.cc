@@ -156,7 +156,8 @@ bool CeilingDetectorOptions::Check(std::string* why) const {
 }
 
 Status DetectCeiling(const cv::Mat& bgr, const Camera& camera, const CorridorGeometry& g,
-                     const CeilingDetectorOptions& o, CeilingEstimate* estimate) {
+                     const CeilingDetectorOptions& o, CeilingEstimate* estimate,
+                     const ImageEdges* shared) {
   *estimate = CeilingEstimate();
   std::string why;
   if (!o.Check(&why)) return Status::InvalidArgument("ceiling detector: " + why);
@@ -170,7 +171,7 @@ Status DetectCeiling(const cv::Mat& bgr, const Camera& camera, const CorridorGeo
     estimate->reason = "no ceiling/wall junction follows the image's edges";
     return Status::Ok();
   }
-  const OrientedEdges edges = ComputeOrientedEdges(bgr, lines.top - 2, lines.bottom + 3);
+  const OrientedEdges edges = ComputeOrientedEdges(bgr, lines.top - 2, lines.bottom + 3, shared);
   const int band_top = edges.top, band_bottom = edges.top + edges.edges.rows;
 
   double best_score = 0, best_left = 0, best_right = 0;

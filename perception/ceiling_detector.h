@@ -7,6 +7,7 @@
 #include "core/camera.h"
 #include "core/corridor_geometry.h"
 #include "core/status.h"
+#include "perception/oriented_edges.h"
 
 namespace corridor {
 
@@ -41,8 +42,10 @@ struct CeilingEstimate {
 // (d_r, h - H_c, Z), best follow the image's edges; then each edge pixel near the chosen lines
 // gives H_c from its ray's intersection with its wall plane, and the median is the estimate.
 // `bgr` is the raw image; the camera's distortion is honoured. Never fails on bad images:
-// estimate->found is false with a reason.
+// estimate->found is false with a reason. `edges`: the image's edges when another search has
+// them (ComputeImageEdges of `bgr`); null or not fitting: computed on the rows searched.
 Status DetectCeiling(const cv::Mat& bgr, const Camera& camera, const CorridorGeometry& geometry,
-                     const CeilingDetectorOptions& options, CeilingEstimate* estimate);
+                     const CeilingDetectorOptions& options, CeilingEstimate* estimate,
+                     const ImageEdges* edges = nullptr);
 
 }  // namespace corridor

@@ -174,7 +174,8 @@ bool EndWallDetectorOptions::Check(std::string* why) const {
 }
 
 Status DetectEndWall(const cv::Mat& full_bgr, const Camera& full_camera, const CorridorGeometry& g,
-                     const EndWallDetectorOptions& o, EndWallEstimate* estimate) {
+                     const EndWallDetectorOptions& o, EndWallEstimate* estimate,
+                     const ImageEdges* shared) {
   *estimate = EndWallEstimate();
   std::string why;
   if (!o.Check(&why)) return Status::InvalidArgument("end wall detector: " + why);
@@ -187,11 +188,16 @@ Status DetectEndWall(const cv::Mat& full_bgr, const Camera& full_camera, const C
   const cv::Mat& bgr = work.bgr;
   const Camera& camera = work.camera;
   // Edges of the colour gradient: a dark baseboard on a dark floor has no grey edge.
-  cv::Mat dx, dy, edges;
-  if (!ColorCannyEdges(bgr, 0, bgr.rows, &dx, &dy, &edges)) {
-    estimate->reason = "the image is not 8-bit: no edges to search";
-    return Status::Ok();
+  ImageEdges own;
+  const ImageEdges* image_edges = shared;
+  if (work.scale != 1 || shared == nullptr || !shared->Fits(bgr)) {
+    if (!ComputeImageEdges(bgr, &own)) {
+      estimate->reason = "the image is not 8-bit: no edges to search";
+      return Status::Ok();
+    }
+    image_edges = &own;
   }
+  const cv::Mat& edges = image_edges->edges;
   const EdgeProbe probe(edges, camera, g, o.reach_px);
 
   // Near the vanishing point everything converges (grout, lights, doors): too few pixels to tell.

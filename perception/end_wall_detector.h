@@ -7,6 +7,7 @@
 #include "core/camera.h"
 #include "core/corridor_geometry.h"
 #include "core/status.h"
+#include "perception/oriented_edges.h"
 
 namespace corridor {
 
@@ -49,7 +50,10 @@ struct EndWallEstimate {
 // gives D from its ray's intersection with the floor, and the median is the estimate. `bgr` is
 // the raw image; the camera's distortion is honoured. Never fails on bad images: found is false
 // with a reason. InvalidArgument for bad options or an image that is not the camera's size.
+// `edges`: the image's edges when another search has them (ComputeImageEdges of `bgr`), used when
+// the image is searched at its own resolution; else computed here.
 Status DetectEndWall(const cv::Mat& bgr, const Camera& camera, const CorridorGeometry& geometry,
-                     const EndWallDetectorOptions& options, EndWallEstimate* estimate);
+                     const EndWallDetectorOptions& options, EndWallEstimate* estimate,
+                     const ImageEdges* edges = nullptr);
 
 }  // namespace corridor

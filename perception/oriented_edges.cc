@@ -42,15 +42,34 @@ bool ColorCannyEdges(const cv::Mat& bgr, int from, int to, cv::Mat* dx, cv::Mat*
   return true;
 }
 
-OrientedEdges ComputeOrientedEdges(const cv::Mat& bgr, int top, int bottom) {
+bool ComputeImageEdges(const cv::Mat& bgr, ImageEdges* out) {
+  *out = ImageEdges();
+  if (bgr.empty()) return false;
+  if (!ColorCannyEdges(bgr, 0, bgr.rows, &out->dx, &out->dy, &out->edges)) {
+    *out = ImageEdges();
+    return false;
+  }
+  return true;
+}
+
+OrientedEdges ComputeOrientedEdges(const cv::Mat& bgr, int top, int bottom,
+                                   const ImageEdges* shared) {
   OrientedEdges out;
   top = std::clamp(top, 0, bgr.rows);
   bottom = std::clamp(bottom, top, bgr.rows);
   out.top = top;
   if (bottom <= top) return out;
-  const int from = std::max(0, top - kBandMargin), to = std::min(bgr.rows, bottom + kBandMargin);
+  int from = 0;
   cv::Mat dx, dy, edges;
-  if (!ColorCannyEdges(bgr, from, to, &dx, &dy, &edges)) return out;  // Not 8-bit: no edges.
+  if (shared != nullptr && shared->Fits(bgr)) {
+    dx = shared->dx;
+    dy = shared->dy;
+    edges = shared->edges;
+  } else {
+    from = std::max(0, top - kBandMargin);
+    const int to = std::min(bgr.rows, bottom + kBandMargin);
+    if (!ColorCannyEdges(bgr, from, to, &dx, &dy, &edges)) return out;  // Not 8-bit: no edges.
+  }
   const cv::Rect band(0, top - from, bgr.cols, bottom - top);
   out.edges = edges(band).clone();
   // Each edge pixel's orientation bit, OR-ed over its 3x3 neighbourhood.

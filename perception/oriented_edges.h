@@ -1,7 +1,8 @@
 #pragma once
 
-// Private helpers of the ceiling and end-wall searches: colour edges, edges that know which way
-// they run, and how well a projected line follows them.
+// Helpers of the ceiling and end-wall searches: colour edges (ImageEdges, which the pipeline
+// computes once for both when they search the same image), edges that know which way they run,
+// and how well a projected line follows them.
 
 #include <opencv2/core.hpp>
 
@@ -31,9 +32,25 @@ struct OrientedEdges {
   cv::Mat near;     // CV_8U: bit b set where an edge of orientation bin b lies within 1 px.
 };
 
-// Edges of rows [top, bottom) (clamped to the image), computed with a few rows of margin so that
-// the blur and Canny's hysteresis see nearly what they would see over the whole image.
-OrientedEdges ComputeOrientedEdges(const cv::Mat& bgr, int top, int bottom);
+// ColorCannyEdges over a whole image, computed once for every search that reads that image.
+struct ImageEdges {
+  cv::Mat dx, dy;  // CV_16S colour gradient.
+  cv::Mat edges;   // CV_8U, 255 = edge.
+  // True when these are the edges of an image of `image`'s size.
+  bool Fits(const cv::Mat& image) const {
+    return !edges.empty() && edges.size() == image.size() && dx.size() == image.size() &&
+           dy.size() == image.size();
+  }
+};
+
+// The whole image's edges; false (and *out empty) for an image that is not 8-bit or is empty.
+bool ComputeImageEdges(const cv::Mat& bgr, ImageEdges* out);
+
+// Edges of rows [top, bottom) (clamped to the image): cut from `shared` when it fits the image,
+// else computed with a few rows of margin so that the blur and Canny's hysteresis see nearly what
+// they would see over the whole image.
+OrientedEdges ComputeOrientedEdges(const cv::Mat& bgr, int top, int bottom,
+                                   const ImageEdges* shared = nullptr);
 
 // Fraction of the line's visible samples (x >= 0; rows inside the band) that have an edge within
 // 1 px running along the line: its gradient within one orientation bin (22.5 degrees) of the

@@ -20,7 +20,8 @@ bool InnerLineCheckOptions::Check(std::string* why) const {
 
 InnerLineCheck CheckInnerLine(const cv::Mat& bgr, const Camera& camera,
                               const CeilingDetectorOptions& ceiling,
-                              const InnerLineCheckOptions& options, CorridorGeometry* geometry) {
+                              const InnerLineCheckOptions& options, CorridorGeometry* geometry,
+                              const ImageEdges* edges) {
   InnerLineCheck check;
   const double h = geometry->camera_height;
   CeilingDetectorOptions wide = ceiling;
@@ -28,7 +29,7 @@ InnerLineCheck CheckInnerLine(const cv::Mat& bgr, const Camera& camera,
   wide.min_height = h + options.min_above_camera;
   if (!(wide.max_height > wide.min_height)) return check;
   CeilingEstimate sides;
-  if (!DetectCeiling(bgr, camera, *geometry, wide, &sides).ok()) return check;
+  if (!DetectCeiling(bgr, camera, *geometry, wide, &sides, edges).ok()) return check;
   for (int s = 0; s < 2; ++s) {
     check.side_height[s] = sides.side_height[s];
     check.side_support[s] = sides.side_support[s];

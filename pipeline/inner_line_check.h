@@ -34,9 +34,11 @@ struct InnerLineCheck {
 
 // Runs the check on the search image (`bgr` with `camera`, as the ceiling search sees them);
 // `ceiling` are the ceiling search's options (its min_height..max_height bound the ceiling the
-// trusted side may give). Updates *geometry (width and offset) when a wall moves.
+// trusted side may give). Updates *geometry (width and offset) when a wall moves. `edges`: the
+// search image's edges, when computed already (see DetectCeiling).
 InnerLineCheck CheckInnerLine(const cv::Mat& bgr, const Camera& camera,
                               const CeilingDetectorOptions& ceiling,
-                              const InnerLineCheckOptions& options, CorridorGeometry* geometry);
+                              const InnerLineCheckOptions& options, CorridorGeometry* geometry,
+                              const ImageEdges* edges = nullptr);
 
 }  // namespace corridor

@@ -359,17 +359,26 @@ Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* res
                  ? HalveToWidth(result->image, camera, options_.search_max_width)
                  : result->search;
   }
+  // When the end-wall search reads the search image at its own resolution, it needs the whole
+  // image's edges: computed once, they serve every ceiling search too.
+  ImageEdges edges;
+  const ImageEdges* shared_edges = nullptr;
+  if (search_end_wall && WorkingScale(search.bgr.cols, options_.end_wall.max_work_width) == 1 &&
+      ComputeImageEdges(search.bgr, &edges)) {
+    shared_edges = &edges;
+  }
   if (search_ceiling) {
-    status = DetectCeiling(search.bgr, search.camera, geometry, options_.ceiling, &result->ceiling);
+    status = DetectCeiling(search.bgr, search.camera, geometry, options_.ceiling, &result->ceiling,
+                           shared_edges);
     if (!status.ok()) return finish(status);
     if (result->ceiling.found) geometry.ceiling_height = result->ceiling.height;
     if (options_.ceiling_checks_baseboards && result->junctions.status.ok() &&
         !result->width_held) {
-      CheckBaseboards(camera, search, &geometry, result);
+      CheckBaseboards(camera, search, shared_edges, &geometry, result);
     }
     if (options_.ceiling_checks_inner_lines && result->junctions.status.ok() &&
         !result->width_held) {
-      status = MoveInnerWall(search, previous, &geometry, result);
+      status = MoveInnerWall(search, shared_edges, previous, &geometry, result);
       if (!status.ok()) return finish(status);
     }
     HoldCeiling(previous, options_.max_ceiling_disagreement, options_.ceiling.min_support,
@@ -379,7 +388,8 @@ Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* res
   stage = Clock::now();
   if (search_end_wall) {
     status =
-        DetectEndWall(search.bgr, search.camera, geometry, options_.end_wall, &result->end_wall);
+        DetectEndWall(search.bgr, search.camera, geometry, options_.end_wall, &result->end_wall,
+                      shared_edges);
     if (!status.ok()) return finish(status);
     if (result->end_wall.found) geometry.end_distance = result->end_wall.distance;
   }
@@ -394,7 +404,8 @@ Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* res
 }
 
 void DepthRecoverer::CheckBaseboards(const Camera& camera, const WorkingImage& search,
-                                     CorridorGeometry* geometry, RecoverDepthResult* result) const {
+                                     const ImageEdges* edges, CorridorGeometry* geometry,
+                                     RecoverDepthResult* result) const {
   // Heights that agree within 6% need no check; a lower line must bring them within 8%, and to
   // less than half the disagreement.
   // Without two sides strong enough to compare (as when the upper line has skewed the whole
@@ -427,7 +438,9 @@ void DepthRecoverer::CheckBaseboards(const Camera& camera, const WorkingImage& s
       continue;
     }
     CeilingEstimate ceiling;
-    if (!DetectCeiling(search.bgr, search.camera, g, options_.ceiling, &ceiling).ok()) continue;
+    if (!DetectCeiling(search.bgr, search.camera, g, options_.ceiling, &ceiling, edges).ok()) {
+      continue;
+    }
     const double after =
         compared ? CeilingDisagreement(ceiling, g.camera_height)
                  : CeilingDisagreement(ceiling, g.camera_height, options_.ceiling.min_support);
@@ -457,7 +470,7 @@ void DepthRecoverer::CheckBaseboards(const Camera& camera, const WorkingImage& s
                   result);
 }
 
-Status DepthRecoverer::MoveInnerWall(const WorkingImage& search,
+Status DepthRecoverer::MoveInnerWall(const WorkingImage& search, const ImageEdges* edges,
                                      const CorridorGeometry* previous, CorridorGeometry* geometry,
                                      RecoverDepthResult* result) const {
   // Both ceiling junctions found where the walls put them, agreeing: nothing to check. Neither
@@ -470,7 +483,8 @@ Status DepthRecoverer::MoveInnerWall(const WorkingImage& search,
   }
   CorridorGeometry moved = *geometry;
   const InnerLineCheck check =
-      CheckInnerLine(search.bgr, search.camera, options_.ceiling, options_.inner_line, &moved);
+      CheckInnerLine(search.bgr, search.camera, options_.ceiling, options_.inner_line, &moved,
+                     edges);
   if (!check.moved || !CheckPlausible(moved, options_).ok()) return Status::Ok();
   // In a sequence the previous frame's width must agree better with the moved wall than with the
   // line it replaces (a misjudged side would otherwise carry on through the width hold).
@@ -481,7 +495,7 @@ Status DepthRecoverer::MoveInnerWall(const WorkingImage& search,
   }
   CeilingEstimate ceiling;
   const Status status =
-      DetectCeiling(search.bgr, search.camera, moved, options_.ceiling, &ceiling);
+      DetectCeiling(search.bgr, search.camera, moved, options_.ceiling, &ceiling, edges);
   if (!status.ok()) return status;
   moved.ceiling_height = ceiling.found ? ceiling.height : options_.ceiling_height;
   result->ceiling = ceiling;

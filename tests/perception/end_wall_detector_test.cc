@@ -39,6 +39,21 @@ TEST_P(EndWallOnGeneratedCorridor, IsFoundWithin3Percent) {
               estimate.corner, estimate.reason.c_str());
   ASSERT_TRUE(estimate.found) << estimate.reason;
   EXPECT_NEAR(estimate.distance, truth, 0.03 * truth);
+  // The same search on edges computed once for the pipeline's searches (the same edges: the same
+  // estimate); edges of another image size are not used.
+  ImageEdges shared;
+  ASSERT_TRUE(ComputeImageEdges(frame.bgr, &shared));
+  ImageEdges other;
+  ASSERT_TRUE(ComputeImageEdges(frame.bgr.rowRange(0, frame.bgr.rows / 2), &other));
+  for (const ImageEdges* edges : {&shared, &other}) {
+    EndWallEstimate again;
+    ASSERT_TRUE(DetectEndWall(frame.bgr, camera, frame.truth, EndWallDetectorOptions(), &again,
+                              edges)
+                    .ok());
+    EXPECT_EQ(again.found, estimate.found);
+    EXPECT_EQ(again.distance, estimate.distance);
+    EXPECT_EQ(again.points, estimate.points);
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(

@@ -5,6 +5,7 @@
 #include <random>
 
 #include <gtest/gtest.h>
+#include <opencv2/imgproc.hpp>
 
 namespace corridor {
 namespace {
@@ -48,6 +49,45 @@ TEST(OrientedEdgesTest, OrientationBinEdges) {
   EXPECT_EQ(OrientationBin(-5, 0), 7);  // 180 degrees: the last bin.
   EXPECT_EQ(OrientationBin(0, -3), 4);  // -90 degrees is 90.
   EXPECT_EQ(OrientationBin(-100, -41), 0);  // -157.6 degrees is 22.4.
+}
+
+// A band cut from edges computed once over the whole image holds exactly those edges, and each
+// edge's orientation bit (from the shared gradient) within 1 px.
+TEST(OrientedEdgesTest, BandFromSharedImageEdges) {
+  cv::Mat image(120, 160, CV_8UC3, cv::Scalar(90, 100, 110));
+  cv::rectangle(image, cv::Rect(40, 30, 60, 50), cv::Scalar(200, 180, 40), cv::FILLED);
+  cv::line(image, cv::Point(0, 110), cv::Point(159, 60), cv::Scalar(20, 20, 200), 3);
+  ImageEdges shared;
+  ASSERT_TRUE(ComputeImageEdges(image, &shared));
+  ASSERT_TRUE(shared.Fits(image));
+  EXPECT_GT(cv::countNonZero(shared.edges), 200);
+  const OrientedEdges band = ComputeOrientedEdges(image, 25, 90, &shared);
+  ASSERT_EQ(band.top, 25);
+  ASSERT_EQ(band.edges.rows, 65);
+  EXPECT_EQ(cv::norm(band.edges, shared.edges.rowRange(25, 90), cv::NORM_INF), 0.0);
+  int checked = 0;
+  for (int v = 1; v + 1 < band.edges.rows; ++v) {
+    for (int u = 1; u + 1 < band.edges.cols; ++u) {
+      if (band.edges.at<uchar>(v, u) == 0) continue;
+      const int bin = OrientationBin(shared.dx.at<short>(v + 25, u), shared.dy.at<short>(v + 25, u));
+      for (int dv = -1; dv <= 1; ++dv) {
+        for (int du = -1; du <= 1; ++du) {
+          ASSERT_NE(band.near.at<uchar>(v + dv, u + du) & (1 << bin), 0) << u << ", " << v;
+        }
+      }
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 100);
+  // Edges of another size are not used: the band is computed from the image.
+  ImageEdges other;
+  ASSERT_TRUE(ComputeImageEdges(image.colRange(0, 80), &other));
+  EXPECT_FALSE(other.Fits(image));
+  const OrientedEdges own = ComputeOrientedEdges(image, 25, 90, &other);
+  const OrientedEdges plain = ComputeOrientedEdges(image, 25, 90);
+  EXPECT_EQ(cv::norm(own.edges, plain.edges, cv::NORM_INF), 0.0);
+  EXPECT_FALSE(ComputeImageEdges(cv::Mat(), &other));
+  EXPECT_FALSE(ComputeImageEdges(cv::Mat(10, 10, CV_32FC3, cv::Scalar(0, 0, 0)), &other));
 }
 
 }  // namespace
