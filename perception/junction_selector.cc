@@ -44,11 +44,19 @@ Eigen::Vector2d DownDirection(const MergedLine& line, const Eigen::Vector2d& vp)
   return (far - vp).normalized();
 }
 
-// A baseboard gives two parallel junction-like lines: its top, and below it the junction. The
-// lines just below the chosen one (within 6 degrees, through the same vanishing point, on the floor
-// side) with at least `min_ratio` of its boundary score: the one farthest below, or -1.
-int LowerLine(const std::vector<JunctionCandidate>& side, int chosen, const Eigen::Vector2d& vp,
-              bool left, double min_ratio) {
+// A baseboard's top and bottom edges (the junction) meet the vanishing point within a few
+// degrees of each other in the image.
+constexpr double kBaseboardMaxAngleDeg = 6.0;
+// A doorway set back from the wall (a recess) has its own floor line beyond the wall's, farther
+// from it: 6.6 degrees in the 1280x720 benchmark frame, where the recess's short line scored
+// higher than the wall's long one.
+constexpr double kRecessMaxAngleDeg = 12.0;
+
+// The lines below the chosen one (through the same vanishing point, on the floor side, turned
+// from it by at least min_angle and less than max_angle degrees) with at least `min_ratio` of its
+// boundary score: the one farthest below (`farthest`) or the nearest; -1 when there is none.
+int LineBelow(const std::vector<JunctionCandidate>& side, int chosen, const Eigen::Vector2d& vp,
+              bool left, double min_ratio, double min_angle, double max_angle, bool farthest) {
   const Eigen::Vector2d d_chosen = DownDirection(side[chosen].line, vp);
   int best = -1;
   double best_angle = 0;
@@ -60,7 +68,8 @@ int LowerLine(const std::vector<JunctionCandidate>& side, int chosen, const Eige
     const double cross = d_chosen.x() * d.y() - d_chosen.y() * d.x();
     const bool inner = left ? cross < 0 : cross > 0;
     const double angle = std::acos(std::clamp(d_chosen.dot(d), -1.0, 1.0)) * 180.0 / M_PI;
-    if (inner && angle < 6.0 && angle > best_angle) {
+    if (!inner || angle < min_angle || angle >= max_angle) continue;
+    if (best < 0 || (farthest ? angle > best_angle : angle < best_angle)) {
       best = static_cast<int>(k);
       best_angle = angle;
     }
@@ -68,10 +77,19 @@ int LowerLine(const std::vector<JunctionCandidate>& side, int chosen, const Eige
   return best;
 }
 
+// A baseboard gives two parallel junction-like lines: its top, and below it the junction. The
+// line just below the chosen one (within kBaseboardMaxAngleDeg) with at least `min_ratio` of its
+// boundary score, the one farthest below; or -1.
+int LowerLine(const std::vector<JunctionCandidate>& side, int chosen, const Eigen::Vector2d& vp,
+              bool left, double min_ratio) {
+  return LineBelow(side, chosen, vp, left, min_ratio, 0.0, kBaseboardMaxAngleDeg, true);
+}
+
 // When the chosen line has a partner below it that looks at least nearly as much like the floor's
 // boundary, or with a band between them unlike the floor below, the partner is the junction (the
 // chosen line is the baseboard's top). Otherwise the partner with at least half the score is kept
-// as the side's alternative.
+// as the side's alternative; without one, the nearest line below it up to kRecessMaxAngleDeg with
+// at least half the score (the wall's junction when the chosen line is a recess's).
 void ApplyBaseboardRule(const std::vector<JunctionCandidate>& side, const Eigen::Vector2d& vp,
                         bool left, const BaseboardBandTest& band, int* chosen, int* lower) {
   int partner = LowerLine(side, *chosen, vp, left, 0.8);
@@ -89,6 +107,10 @@ void ApplyBaseboardRule(const std::vector<JunctionCandidate>& side, const Eigen:
     return;
   }
   *lower = LowerLine(side, *chosen, vp, left, 0.5);
+  if (*lower < 0) {
+    *lower = LineBelow(side, *chosen, vp, left, 0.5, kBaseboardMaxAngleDeg, kRecessMaxAngleDeg,
+                       false);
+  }
 }
 
 }  // namespace

@@ -20,9 +20,10 @@ struct SelectedPair {
   int left = -1, right = -1;  // Indices into the candidate lists; -1 when none.
   Eigen::Vector2d vanishing_point = Eigen::Vector2d::Zero();
   double score = 0;           // The pair's score.
-  // Per side, a line just below the chosen one (within 6 degrees, through the same vanishing
-  // point, on the floor side) that the baseboard rule did not take: the junction if the chosen
-  // line is a baseboard top after all. -1 when there is none. Another cue (the ceiling) decides.
+  // Per side, a line below the chosen one (within 12 degrees, through the same vanishing point, on
+  // the floor side, with at least half its boundary score) that the baseboard rule did not take:
+  // the junction if the chosen line is a baseboard top, or a recess's floor line, after all. -1
+  // when there is none. Another cue (the ceiling) decides.
   int left_lower = -1, right_lower = -1;
 };
 

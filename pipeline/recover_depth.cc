@@ -466,7 +466,7 @@ void DepthRecoverer::CheckBaseboards(const Camera& camera, const WorkingImage& s
   *geometry = best_geometry;
   AddFallbackNote(std::string(best_side == 0 ? "left" : "right") +
                       " junction: the lower of two parallel lines (the upper one a baseboard's "
-                      "top), with which both ceiling junctions agree",
+                      "top or a recess's floor line), with which both ceiling junctions agree",
                   result);
 }
 

@@ -94,6 +94,45 @@ TEST(BaseboardCheckTest, ALowerLineThatMakesTheCeilingAgreeIsTakenWhenNoneWasCom
   EXPECT_NEAR(runs.checked.geometry.offset, runs.frame.truth.offset, 0.05);
 }
 
+// A doorway set back from the right wall: the recess's floor line (short, with the door above it)
+// outscores the wall's own junction (long, but with the recess's floor above part of it) in the
+// pair choice, and the width comes out about 14% too wide at 1280x720. The wall's junction is
+// 6.6 degrees from it, beyond a baseboard's; the two ceiling sides disagree, and with the wall's
+// line they agree. (The corridor benchmarks' frame: Cord_E01's corridor with doors, seed 101.)
+TEST(BaseboardCheckTest, ARecessLineGivesWayToTheWallsJunction) {
+  synth::SceneOptions scene;
+  scene.width = 2.11;
+  scene.ceiling_height = 2.7;
+  scene.length = 45.0;
+  scene.clutter = 0.0;
+  scene.door_density = 0.3;
+  scene.floor_wall_contrast = 0.9;
+  scene.baseboard_contrast = 0.6;
+  scene.seed = 101;
+  Camera camera = synth::PaperCamera(0.66, 1280 / 420.0);
+  camera.image_height = 720;
+  camera.cy = 359.5;
+  synth::CameraPose pose;
+  pose.pitch = 0.045;
+  pose.yaw = 0.03;
+  pose.offset = 0.10;
+  pose.height = 0.66;
+  pose.distance = 2.0;
+  synth::Frame frame;
+  ASSERT_TRUE(synth::RenderFrame(scene, camera, pose, &frame).ok());
+  RecoverDepthOptions off;
+  off.ceiling_checks_baseboards = false;
+  off.ceiling_checks_inner_lines = false;
+  RecoverDepthResult upper, checked;
+  ASSERT_TRUE(RecoverDepth(frame.bgr, camera, off, &upper).ok());
+  ASSERT_TRUE(RecoverDepth(frame.bgr, camera, RecoverDepthOptions(), &checked).ok());
+  EXPECT_GT(upper.geometry.width, 1.08 * frame.truth.width);
+  EXPECT_TRUE(upper.junctions.has_right_lower);
+  EXPECT_NEAR(checked.geometry.width, frame.truth.width, 0.02 * frame.truth.width);
+  EXPECT_NEAR(checked.geometry.ceiling_height, scene.ceiling_height, 0.03 * scene.ceiling_height);
+  EXPECT_NE(checked.fallback.find("recess"), std::string::npos) << checked.fallback;
+}
+
 // Where both ceiling junctions already agree (a frame of the same corridor with both junctions
 // right), nothing changes.
 TEST(BaseboardCheckTest, AgreeingCeilingJunctionsChangeNothing) {
