@@ -157,7 +157,7 @@ bool CeilingDetectorOptions::Check(std::string* why) const {
 
 Status DetectCeiling(const cv::Mat& bgr, const Camera& camera, const CorridorGeometry& g,
                      const CeilingDetectorOptions& o, CeilingEstimate* estimate,
-                     const ImageEdges* shared) {
+                     ImageEdges* shared) {
   *estimate = CeilingEstimate();
   std::string why;
   if (!o.Check(&why)) return Status::InvalidArgument("ceiling detector: " + why);

@@ -42,10 +42,11 @@ struct CeilingEstimate {
 // (d_r, h - H_c, Z), best follow the image's edges; then each edge pixel near the chosen lines
 // gives H_c from its ray's intersection with its wall plane, and the median is the estimate.
 // `bgr` is the raw image; the camera's distortion is honoured. Never fails on bad images:
-// estimate->found is false with a reason. `edges`: the image's edges when another search has
-// them (ComputeImageEdges of `bgr`); null or not fitting: computed on the rows searched.
+// estimate->found is false with a reason. `edges`: null, or the frame's edges of `bgr` shared by
+// its searches (ComputeImageEdges, or empty at first), used where they cover the rows searched
+// and otherwise filled from the top down far enough (ComputeOrientedEdges).
 Status DetectCeiling(const cv::Mat& bgr, const Camera& camera, const CorridorGeometry& geometry,
                      const CeilingDetectorOptions& options, CeilingEstimate* estimate,
-                     const ImageEdges* edges = nullptr);
+                     ImageEdges* edges = nullptr);
 
 }  // namespace corridor

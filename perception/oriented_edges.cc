@@ -13,6 +13,9 @@ namespace {
 
 // Rows of edges computed beyond the band, for the blur and Canny's gradients and hysteresis.
 constexpr int kBandMargin = 8;
+// Rows a cache of edges reaches below the band that filled it, in hundredths of the image's
+// height: a later search of the frame, with the walls moved, reaches a little farther down.
+constexpr int kCacheSlackPercent = 4;
 
 }  // namespace
 
@@ -42,18 +45,34 @@ bool ColorCannyEdges(const cv::Mat& bgr, int from, int to, cv::Mat* dx, cv::Mat*
   return true;
 }
 
-bool ComputeImageEdges(const cv::Mat& bgr, ImageEdges* out) {
+bool ImageEdges::Covers(const cv::Mat& image, int bottom) const {
+  if (edges.empty() || image_rows != image.rows || edges.cols != image.cols ||
+      dx.size() != edges.size() || dy.size() != edges.size()) {
+    return false;
+  }
+  return edges.rows == image.rows || bottom + kBandMargin <= edges.rows;
+}
+
+namespace {
+
+// The image's rows [0, to) into *out; false (and *out empty) as ColorCannyEdges.
+bool EdgesFromTop(const cv::Mat& bgr, int to, ImageEdges* out) {
   *out = ImageEdges();
-  if (bgr.empty()) return false;
-  if (!ColorCannyEdges(bgr, 0, bgr.rows, &out->dx, &out->dy, &out->edges)) {
+  if (bgr.empty() || !ColorCannyEdges(bgr, 0, to, &out->dx, &out->dy, &out->edges)) {
     *out = ImageEdges();
     return false;
   }
+  out->image_rows = bgr.rows;
   return true;
 }
 
-OrientedEdges ComputeOrientedEdges(const cv::Mat& bgr, int top, int bottom,
-                                   const ImageEdges* shared) {
+}  // namespace
+
+bool ComputeImageEdges(const cv::Mat& bgr, ImageEdges* out) {
+  return EdgesFromTop(bgr, bgr.rows, out);
+}
+
+OrientedEdges ComputeOrientedEdges(const cv::Mat& bgr, int top, int bottom, ImageEdges* cache) {
   OrientedEdges out;
   top = std::clamp(top, 0, bgr.rows);
   bottom = std::clamp(bottom, top, bgr.rows);
@@ -61,10 +80,16 @@ OrientedEdges ComputeOrientedEdges(const cv::Mat& bgr, int top, int bottom,
   if (bottom <= top) return out;
   int from = 0;
   cv::Mat dx, dy, edges;
-  if (shared != nullptr && shared->Fits(bgr)) {
-    dx = shared->dx;
-    dy = shared->dy;
-    edges = shared->edges;
+  if (cache != nullptr) {
+    if (!cache->Covers(bgr, bottom)) {
+      const int slack = kCacheSlackPercent * bgr.rows / 100;
+      if (!EdgesFromTop(bgr, std::min(bgr.rows, bottom + kBandMargin + slack), cache)) {
+        return out;  // Not 8-bit: no edges.
+      }
+    }
+    dx = cache->dx;
+    dy = cache->dy;
+    edges = cache->edges;
   } else {
     from = std::max(0, top - kBandMargin);
     const int to = std::min(bgr.rows, bottom + kBandMargin);

@@ -32,25 +32,30 @@ struct OrientedEdges {
   cv::Mat near;     // CV_8U: bit b set where an edge of orientation bin b lies within 1 px.
 };
 
-// ColorCannyEdges over a whole image, computed once for every search that reads that image.
+// ColorCannyEdges of an image's rows from the top down, computed once for every search of a frame
+// that reads that image: all of them (ComputeImageEdges), or as far down as the ceiling searches
+// need (ComputeOrientedEdges keeps them).
 struct ImageEdges {
-  cv::Mat dx, dy;  // CV_16S colour gradient.
-  cv::Mat edges;   // CV_8U, 255 = edge.
-  // True when these are the edges of an image of `image`'s size.
-  bool Fits(const cv::Mat& image) const {
-    return !edges.empty() && edges.size() == image.size() && dx.size() == image.size() &&
-           dy.size() == image.size();
-  }
+  cv::Mat dx, dy;      // CV_16S colour gradient of rows [0, edges.rows).
+  cv::Mat edges;       // CV_8U, 255 = edge.
+  int image_rows = 0;  // Rows of the image they are of.
+  // True when these are the edges of the whole of an image of `image`'s size.
+  bool Fits(const cv::Mat& image) const { return Covers(image, image.rows); }
+  // True when rows down to `bottom` of an image of `image`'s size can be cut from these: the whole
+  // image, or rows computed at least a blur and hysteresis margin below `bottom`.
+  bool Covers(const cv::Mat& image, int bottom) const;
 };
 
 // The whole image's edges; false (and *out empty) for an image that is not 8-bit or is empty.
 bool ComputeImageEdges(const cv::Mat& bgr, ImageEdges* out);
 
-// Edges of rows [top, bottom) (clamped to the image): cut from `shared` when it fits the image,
-// else computed with a few rows of margin so that the blur and Canny's hysteresis see nearly what
-// they would see over the whole image.
+// Edges of rows [top, bottom) (clamped to the image). Without `cache`: computed with a few rows of
+// margin so that the blur and Canny's hysteresis see nearly what they would see over the whole
+// image. With it: cut from *cache when it covers the rows; otherwise the image's rows from the top
+// down to a little below `bottom` (slack for the next search of the frame) are computed into
+// *cache first.
 OrientedEdges ComputeOrientedEdges(const cv::Mat& bgr, int top, int bottom,
-                                   const ImageEdges* shared = nullptr);
+                                   ImageEdges* cache = nullptr);
 
 // Fraction of the line's visible samples (x >= 0; rows inside the band) that have an edge within
 // 1 px running along the line: its gradient within one orientation bin (22.5 degrees) of the

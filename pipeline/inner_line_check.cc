@@ -21,7 +21,7 @@ bool InnerLineCheckOptions::Check(std::string* why) const {
 InnerLineCheck CheckInnerLine(const cv::Mat& bgr, const Camera& camera,
                               const CeilingDetectorOptions& ceiling,
                               const InnerLineCheckOptions& options, CorridorGeometry* geometry,
-                              const ImageEdges* edges) {
+                              ImageEdges* edges) {
   InnerLineCheck check;
   const double h = geometry->camera_height;
   CeilingDetectorOptions wide = ceiling;

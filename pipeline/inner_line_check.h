@@ -35,10 +35,10 @@ struct InnerLineCheck {
 // Runs the check on the search image (`bgr` with `camera`, as the ceiling search sees them);
 // `ceiling` are the ceiling search's options (its min_height..max_height bound the ceiling the
 // trusted side may give). Updates *geometry (width and offset) when a wall moves. `edges`: the
-// search image's edges, when computed already (see DetectCeiling).
+// frame's edges of the search image (see DetectCeiling), or null.
 InnerLineCheck CheckInnerLine(const cv::Mat& bgr, const Camera& camera,
                               const CeilingDetectorOptions& ceiling,
                               const InnerLineCheckOptions& options, CorridorGeometry* geometry,
-                              const ImageEdges* edges = nullptr);
+                              ImageEdges* edges = nullptr);
 
 }  // namespace corridor

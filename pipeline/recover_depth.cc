@@ -359,14 +359,14 @@ Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* res
                  ? HalveToWidth(result->image, camera, options_.search_max_width)
                  : result->search;
   }
-  // When the end-wall search reads the search image at its own resolution, it needs the whole
-  // image's edges: computed once, they serve every ceiling search too.
+  // The search image's edges, shared by the frame's searches: when the end-wall search reads the
+  // image at its own resolution, it needs all of them, computed once here; otherwise the first
+  // ceiling search computes the rows it needs, and the checks' searches reuse them.
   ImageEdges edges;
-  const ImageEdges* shared_edges = nullptr;
-  if (search_end_wall && WorkingScale(search.bgr.cols, options_.end_wall.max_work_width) == 1 &&
-      ComputeImageEdges(search.bgr, &edges)) {
-    shared_edges = &edges;
+  if (search_end_wall && WorkingScale(search.bgr.cols, options_.end_wall.max_work_width) == 1) {
+    ComputeImageEdges(search.bgr, &edges);
   }
+  ImageEdges* shared_edges = &edges;
   if (search_ceiling) {
     status = DetectCeiling(search.bgr, search.camera, geometry, options_.ceiling, &result->ceiling,
                            shared_edges);
@@ -404,7 +404,7 @@ Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* res
 }
 
 void DepthRecoverer::CheckBaseboards(const Camera& camera, const WorkingImage& search,
-                                     const ImageEdges* edges, CorridorGeometry* geometry,
+                                     ImageEdges* edges, CorridorGeometry* geometry,
                                      RecoverDepthResult* result) const {
   // Heights that agree within 6% need no check; a lower line must bring them within 8%, and to
   // less than half the disagreement.
@@ -470,7 +470,7 @@ void DepthRecoverer::CheckBaseboards(const Camera& camera, const WorkingImage& s
                   result);
 }
 
-Status DepthRecoverer::MoveInnerWall(const WorkingImage& search, const ImageEdges* edges,
+Status DepthRecoverer::MoveInnerWall(const WorkingImage& search, ImageEdges* edges,
                                      const CorridorGeometry* previous, CorridorGeometry* geometry,
                                      RecoverDepthResult* result) const {
   // Both ceiling junctions found where the walls put them, agreeing: nothing to check. Neither

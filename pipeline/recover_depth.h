@@ -123,16 +123,16 @@ class DepthRecoverer {
   // were too weak to compare), and a side has a lower parallel line, the geometry and ceiling with
   // that line instead, if they make the two agree. Updates *geometry and *result (junctions,
   // solver summary, ceiling).
-  // `search` is the image and camera the ceiling search runs on (search_max_width); `edges` its
-  // edges when computed already (else null).
-  void CheckBaseboards(const Camera& camera, const WorkingImage& search, const ImageEdges* edges,
+  // `search` is the image and camera the ceiling search runs on (search_max_width); `edges` the
+  // frame's edges of it, shared by its searches.
+  void CheckBaseboards(const Camera& camera, const WorkingImage& search, ImageEdges* edges,
                        CorridorGeometry* geometry, RecoverDepthResult* result) const;
 
   // ceiling_checks_inner_lines: unless both ceiling junctions agree already, the inner-line check
   // (inner_line_check.h) on the search image; a moved wall updates *geometry, the ceiling and the
   // fallback note. In a sequence (`previous` not null) the move must bring the width nearer the
   // previous frame's. Fails only when the ceiling search does.
-  Status MoveInnerWall(const WorkingImage& search, const ImageEdges* edges,
+  Status MoveInnerWall(const WorkingImage& search, ImageEdges* edges,
                        const CorridorGeometry* previous, CorridorGeometry* geometry,
                        RecoverDepthResult* result) const;
 
