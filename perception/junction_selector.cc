@@ -51,6 +51,11 @@ constexpr double kBaseboardMaxAngleDeg = 6.0;
 // from it: 6.6 degrees in the 1280x720 benchmark frame, where the recess's short line scored
 // higher than the wall's long one.
 constexpr double kRecessMaxAngleDeg = 12.0;
+// ... and the wall's line, partly under the recess's floor, looks less like the floor's boundary
+// than the recess's short line under its door: at least this much of its boundary score (on the
+// paper preset's Cord_E02 frames 1-3 the wall's line has 0.48 of it; 0.3 let a grout line in on
+// the varied set).
+constexpr double kRecessMinBoundaryRatio = 0.4;
 
 // The lines below the chosen one (through the same vanishing point, on the floor side, turned
 // from it by at least min_angle and less than max_angle degrees) with at least `min_ratio` of its
@@ -89,7 +94,8 @@ int LowerLine(const std::vector<JunctionCandidate>& side, int chosen, const Eige
 // boundary, or with a band between them unlike the floor below, the partner is the junction (the
 // chosen line is the baseboard's top). Otherwise the partner with at least half the score is kept
 // as the side's alternative; without one, the nearest line below it up to kRecessMaxAngleDeg with
-// at least half the score (the wall's junction when the chosen line is a recess's).
+// at least kRecessMinBoundaryRatio of the score (the wall's junction when the chosen line is a
+// recess's).
 void ApplyBaseboardRule(const std::vector<JunctionCandidate>& side, const Eigen::Vector2d& vp,
                         bool left, const BaseboardBandTest& band, int* chosen, int* lower) {
   int partner = LowerLine(side, *chosen, vp, left, 0.8);
@@ -108,8 +114,8 @@ void ApplyBaseboardRule(const std::vector<JunctionCandidate>& side, const Eigen:
   }
   *lower = LowerLine(side, *chosen, vp, left, 0.5);
   if (*lower < 0) {
-    *lower = LineBelow(side, *chosen, vp, left, 0.5, kBaseboardMaxAngleDeg, kRecessMaxAngleDeg,
-                       false);
+    *lower = LineBelow(side, *chosen, vp, left, kRecessMinBoundaryRatio, kBaseboardMaxAngleDeg,
+                       kRecessMaxAngleDeg, false);
   }
 }
 

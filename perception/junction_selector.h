@@ -21,9 +21,9 @@ struct SelectedPair {
   Eigen::Vector2d vanishing_point = Eigen::Vector2d::Zero();
   double score = 0;           // The pair's score.
   // Per side, a line below the chosen one (within 12 degrees, through the same vanishing point, on
-  // the floor side, with at least half its boundary score) that the baseboard rule did not take:
-  // the junction if the chosen line is a baseboard top, or a recess's floor line, after all. -1
-  // when there is none. Another cue (the ceiling) decides.
+  // the floor side, with at least half its boundary score within 6 degrees, 0.4 of it beyond)
+  // that the baseboard rule did not take: the junction if the chosen line is a baseboard top, or
+  // a recess's floor line, after all. -1 when there is none. Another cue (the ceiling) decides.
   int left_lower = -1, right_lower = -1;
 };
 

@@ -133,6 +133,30 @@ TEST(BaseboardCheckTest, ARecessLineGivesWayToTheWallsJunction) {
   EXPECT_NE(checked.fallback.find("recess"), std::string::npos) << checked.fallback;
 }
 
+// Frames 1-3 of the paper preset's Cord_E02: door recesses in the near left wall; the pair choice
+// takes a recess's short floor line (43 px, with the door above it) over the wall's junction
+// (0.48 of its boundary score, 9.6 degrees below it), 17-26% too wide. The ceiling decides for the
+// wall's line.
+TEST(BaseboardCheckTest, ARecessInTheNearWallGivesWayToo) {
+  const synth::ScenePreset preset = testing_util::PaperScene("Cord_E02");
+  for (const size_t pose : {1, 2, 3}) {
+    const synth::Frame frame = RenderPose(preset, pose);
+    ASSERT_FALSE(frame.bgr.empty());
+    RecoverDepthOptions off;
+    off.ceiling_checks_baseboards = false;
+    off.ceiling_checks_inner_lines = false;
+    RecoverDepthResult upper, checked;
+    ASSERT_TRUE(RecoverDepth(frame.bgr, preset.camera, off, &upper).ok());
+    ASSERT_TRUE(RecoverDepth(frame.bgr, preset.camera, RecoverDepthOptions(), &checked).ok());
+    EXPECT_GT(upper.geometry.width, 1.1 * frame.truth.width) << pose;
+    EXPECT_NEAR(checked.geometry.width, frame.truth.width, 0.02 * frame.truth.width) << pose;
+    EXPECT_NEAR(checked.geometry.ceiling_height, preset.scene.ceiling_height,
+                0.03 * preset.scene.ceiling_height)
+        << pose;
+    EXPECT_NE(checked.fallback.find("left junction"), std::string::npos) << checked.fallback;
+  }
+}
+
 // Where both ceiling junctions already agree (a frame of the same corridor with both junctions
 // right), nothing changes.
 TEST(BaseboardCheckTest, AgreeingCeilingJunctionsChangeNothing) {
