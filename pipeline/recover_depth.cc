@@ -372,12 +372,14 @@ Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* res
                            shared_edges);
     if (!status.ok()) return finish(status);
     if (result->ceiling.found) geometry.ceiling_height = result->ceiling.height;
+    bool lower_taken = false;
     if (options_.ceiling_checks_baseboards && result->junctions.status.ok() &&
         !result->width_held) {
-      CheckBaseboards(camera, search, shared_edges, &geometry, result);
+      lower_taken = CheckBaseboards(camera, search, shared_edges, &geometry, result);
     }
+    // A lower line taken has made the two ceiling sides agree: nothing for the inner-line check.
     if (options_.ceiling_checks_inner_lines && result->junctions.status.ok() &&
-        !result->width_held) {
+        !result->width_held && !lower_taken) {
       status = MoveInnerWall(search, shared_edges, previous, &geometry, result);
       if (!status.ok()) return finish(status);
     }
@@ -403,7 +405,7 @@ Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* res
   return finish(status);
 }
 
-void DepthRecoverer::CheckBaseboards(const Camera& camera, const WorkingImage& search,
+bool DepthRecoverer::CheckBaseboards(const Camera& camera, const WorkingImage& search,
                                      ImageEdges* edges, CorridorGeometry* geometry,
                                      RecoverDepthResult* result) const {
   // Heights that agree within 6% need no check; a lower line must bring them within 8%, and to
@@ -414,7 +416,7 @@ void DepthRecoverer::CheckBaseboards(const Camera& camera, const WorkingImage& s
   // searches that agree that closely do not do so by chance.
   const double agree = std::log(1.06), accept = std::log(1.08), weak_accept = std::log(1.03);
   const double before = CeilingDisagreement(result->ceiling, geometry->camera_height);
-  if (before >= 0 && before <= agree) return;
+  if (before >= 0 && before <= agree) return false;
   const bool compared = before >= 0;
   // A lower line must also halve `best` (the disagreement so far); without a comparison it starts
   // at twice weak_accept, so that only the weak_accept bound applies to the first one.
@@ -451,7 +453,7 @@ void DepthRecoverer::CheckBaseboards(const Camera& camera, const WorkingImage& s
     best_summary = summary;
     best_ceiling = ceiling;
   }
-  if (best_side < 0) return;
+  if (best_side < 0) return false;
   JunctionPair& pair = result->junctions;
   if (best_side == 0) {
     pair.left = pair.left_lower;
@@ -468,6 +470,7 @@ void DepthRecoverer::CheckBaseboards(const Camera& camera, const WorkingImage& s
                       " junction: the lower of two parallel lines (the upper one a baseboard's "
                       "top or a recess's floor line), with which both ceiling junctions agree",
                   result);
+  return true;
 }
 
 Status DepthRecoverer::MoveInnerWall(const WorkingImage& search, ImageEdges* edges,

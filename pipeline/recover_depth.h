@@ -125,7 +125,8 @@ class DepthRecoverer {
   // solver summary, ceiling).
   // `search` is the image and camera the ceiling search runs on (search_max_width); `edges` the
   // frame's edges of it, shared by its searches.
-  void CheckBaseboards(const Camera& camera, const WorkingImage& search, ImageEdges* edges,
+  // True when a lower line was taken.
+  bool CheckBaseboards(const Camera& camera, const WorkingImage& search, ImageEdges* edges,
                        CorridorGeometry* geometry, RecoverDepthResult* result) const;
 
   // ceiling_checks_inner_lines: unless both ceiling junctions agree already, the inner-line check
