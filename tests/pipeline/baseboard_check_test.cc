@@ -1,4 +1,5 @@
-// The ceiling as referee of the baseboard rule. On frame 1 of the paper preset's Cord_H03 (20 cm
+// The ceiling as referee of the baseboard rule (and of the recess alternative, at the end). On
+// frame 1 of the paper preset's Cord_H03 (20 cm
 // further along since session 7, where the ceiling search's blur became binomial and frame 1's
 // left ceiling junction fell just short of the compared rule's support) the left junction's pair
 // choice takes the top of the baseboard, and the width comes out 11% too wide; the two ceiling
@@ -9,6 +10,7 @@
 // of these frames itself; it is off here, so that the ceiling is the only referee.
 #include <gtest/gtest.h>
 
+#include "benchmarks/bench_frames.h"
 #include "pipeline/recover_depth.h"
 #include "synth/corridor_renderer.h"
 #include "synth/presets.h"
@@ -35,19 +37,27 @@ struct BothRuns {
   RecoverDepthResult upper, checked;
 };
 
+// One frame recovered with `options` but both ceiling checks off (`unchecked`), and with them.
+void RecoverUncheckedAndChecked(const cv::Mat& bgr, const Camera& camera,
+                                RecoverDepthResult* unchecked, RecoverDepthResult* checked,
+                                const RecoverDepthOptions& options = RecoverDepthOptions()) {
+  RecoverDepthOptions off = options;
+  off.ceiling_checks_baseboards = false;
+  // Without the baseboard check, the inner-line check (which runs after it) would take the other
+  // wall for the wrong one; off too, so that `unchecked` is the upper line's own geometry.
+  off.ceiling_checks_inner_lines = false;
+  ASSERT_TRUE(RecoverDepth(bgr, camera, off, unchecked).ok());
+  ASSERT_TRUE(RecoverDepth(bgr, camera, options, checked).ok());
+}
+
 void RecoverBoth(const std::string& scene, size_t pose, double further, BothRuns* runs) {
   runs->preset = testing_util::PaperScene(scene);
   runs->frame = RenderPose(runs->preset, pose, further);
   ASSERT_FALSE(runs->frame.bgr.empty());
-  RecoverDepthOptions on;
-  on.perception.baseboard_band_contrast = 0;
-  RecoverDepthOptions off = on;
-  off.ceiling_checks_baseboards = false;
-  // Without the baseboard check, the inner-line check (which runs after it) would take the other
-  // wall for the wrong one; off too, so that `upper` is the upper line's own geometry.
-  off.ceiling_checks_inner_lines = false;
-  ASSERT_TRUE(RecoverDepth(runs->frame.bgr, runs->preset.camera, off, &runs->upper).ok());
-  ASSERT_TRUE(RecoverDepth(runs->frame.bgr, runs->preset.camera, on, &runs->checked).ok());
+  RecoverDepthOptions options;
+  options.perception.baseboard_band_contrast = 0;
+  RecoverUncheckedAndChecked(runs->frame.bgr, runs->preset.camera, &runs->upper, &runs->checked,
+                             options);
 }
 
 // The premise of both tests below: the upper line gives a width far too wide, and a lower line
@@ -98,38 +108,17 @@ TEST(BaseboardCheckTest, ALowerLineThatMakesTheCeilingAgreeIsTakenWhenNoneWasCom
 // outscores the wall's own junction (long, but with the recess's floor above part of it) in the
 // pair choice, and the width comes out about 14% too wide at 1280x720. The wall's junction is
 // 6.6 degrees from it, beyond a baseboard's; the two ceiling sides disagree, and with the wall's
-// line they agree. (The corridor benchmarks' frame: Cord_E01's corridor with doors, seed 101.)
+// line they agree. (The corridor benchmarks' 1280x720 frame, benchmarks/bench_frames.h.)
 TEST(BaseboardCheckTest, ARecessLineGivesWayToTheWallsJunction) {
-  synth::SceneOptions scene;
-  scene.width = 2.11;
-  scene.ceiling_height = 2.7;
-  scene.length = 45.0;
-  scene.clutter = 0.0;
-  scene.door_density = 0.3;
-  scene.floor_wall_contrast = 0.9;
-  scene.baseboard_contrast = 0.6;
-  scene.seed = 101;
-  Camera camera = synth::PaperCamera(0.66, 1280 / 420.0);
-  camera.image_height = 720;
-  camera.cy = 359.5;
-  synth::CameraPose pose;
-  pose.pitch = 0.045;
-  pose.yaw = 0.03;
-  pose.offset = 0.10;
-  pose.height = 0.66;
-  pose.distance = 2.0;
-  synth::Frame frame;
-  ASSERT_TRUE(synth::RenderFrame(scene, camera, pose, &frame).ok());
-  RecoverDepthOptions off;
-  off.ceiling_checks_baseboards = false;
-  off.ceiling_checks_inner_lines = false;
+  const bench::BenchFrame& input = bench::PaperLikeFrame(1280, 720);
+  const synth::Frame& frame = input.frame;
   RecoverDepthResult upper, checked;
-  ASSERT_TRUE(RecoverDepth(frame.bgr, camera, off, &upper).ok());
-  ASSERT_TRUE(RecoverDepth(frame.bgr, camera, RecoverDepthOptions(), &checked).ok());
+  ASSERT_NO_FATAL_FAILURE(RecoverUncheckedAndChecked(frame.bgr, input.camera, &upper, &checked));
   EXPECT_GT(upper.geometry.width, 1.08 * frame.truth.width);
   EXPECT_TRUE(upper.junctions.has_right_lower);
   EXPECT_NEAR(checked.geometry.width, frame.truth.width, 0.02 * frame.truth.width);
-  EXPECT_NEAR(checked.geometry.ceiling_height, scene.ceiling_height, 0.03 * scene.ceiling_height);
+  const double ceiling = bench::PaperLikeScene().ceiling_height;
+  EXPECT_NEAR(checked.geometry.ceiling_height, ceiling, 0.03 * ceiling);
   EXPECT_NE(checked.fallback.find("recess"), std::string::npos) << checked.fallback;
 }
 
@@ -142,12 +131,9 @@ TEST(BaseboardCheckTest, ARecessInTheNearWallGivesWayToo) {
   for (const size_t pose : {1, 2, 3}) {
     const synth::Frame frame = RenderPose(preset, pose);
     ASSERT_FALSE(frame.bgr.empty());
-    RecoverDepthOptions off;
-    off.ceiling_checks_baseboards = false;
-    off.ceiling_checks_inner_lines = false;
     RecoverDepthResult upper, checked;
-    ASSERT_TRUE(RecoverDepth(frame.bgr, preset.camera, off, &upper).ok());
-    ASSERT_TRUE(RecoverDepth(frame.bgr, preset.camera, RecoverDepthOptions(), &checked).ok());
+    ASSERT_NO_FATAL_FAILURE(
+        RecoverUncheckedAndChecked(frame.bgr, preset.camera, &upper, &checked));
     EXPECT_GT(upper.geometry.width, 1.1 * frame.truth.width) << pose;
     EXPECT_NEAR(checked.geometry.width, frame.truth.width, 0.02 * frame.truth.width) << pose;
     EXPECT_NEAR(checked.geometry.ceiling_height, preset.scene.ceiling_height,
@@ -163,14 +149,8 @@ TEST(BaseboardCheckTest, AgreeingCeilingJunctionsChangeNothing) {
   const synth::ScenePreset preset = testing_util::PaperScene("Cord_E01");
   const synth::Frame frame = RenderPose(preset, 6);
   ASSERT_FALSE(frame.bgr.empty());
-  RecoverDepthOptions off;
-  off.ceiling_checks_baseboards = false;
-  // Without the baseboard check, the inner-line check (which runs after it) would take the other
-  // wall for the wrong one; off too, so that `upper` is the upper line's own geometry.
-  off.ceiling_checks_inner_lines = false;
   RecoverDepthResult a, b;
-  ASSERT_TRUE(RecoverDepth(frame.bgr, preset.camera, off, &a).ok());
-  ASSERT_TRUE(RecoverDepth(frame.bgr, preset.camera, RecoverDepthOptions(), &b).ok());
+  ASSERT_NO_FATAL_FAILURE(RecoverUncheckedAndChecked(frame.bgr, preset.camera, &a, &b));
   EXPECT_NEAR(a.geometry.width, frame.truth.width, 0.03 * frame.truth.width);
   EXPECT_EQ(a.geometry.width, b.geometry.width);
   EXPECT_EQ(a.geometry.offset, b.geometry.offset);
