@@ -158,8 +158,4 @@ double LineHits::Fraction(int at_least) const {
   return static_cast<double>(hits) / std::max(visible, at_least);
 }
 
-double OrientedLineSupport(const cv::Point* line, int samples, const OrientedEdges& edges) {
-  return OrientedLineHits(line, samples, edges).Fraction(samples / 2);
-}
-
 }  // namespace corridor

@@ -57,19 +57,16 @@ bool ComputeImageEdges(const cv::Mat& bgr, ImageEdges* out);
 OrientedEdges ComputeOrientedEdges(const cv::Mat& bgr, int top, int bottom,
                                    ImageEdges* cache = nullptr);
 
-// Fraction of the line's visible samples (x >= 0; rows inside the band) that have an edge within
-// 1 px running along the line: its gradient within one orientation bin (22.5 degrees) of the
-// line's normal, so that crossing edges (lights, door frames, clutter) do not count. The fraction
-// is of at least half of `samples`, so that a line with few visible samples (one that leaves the
-// image near the vanishing point, where every edge converges) cannot score high. 0 with fewer
-// than 8 visible samples.
-double OrientedLineSupport(const cv::Point* line, int samples, const OrientedEdges& edges);
-
-// The counts behind OrientedLineSupport.
+// How well a projected line follows the edges: of its visible samples (x >= 0; rows inside the
+// band), those that have an edge within 1 px running along the line, its gradient within one
+// orientation bin (22.5 degrees) of the line's normal, so that crossing edges (lights, door frames,
+// clutter) do not count.
 struct LineHits {
   int hits = 0;     // Visible samples with an edge along the line within 1 px (0 below 8 visible).
   int visible = 0;  // Samples inside the band.
-  // hits / max(visible, at_least); 0 with fewer than 8 visible samples.
+  // hits / max(visible, at_least); 0 with fewer than 8 visible samples. `at_least` keeps a line
+  // with few visible samples (one that leaves the image near the vanishing point, where every
+  // edge converges) from scoring high.
   double Fraction(int at_least) const;
 };
 LineHits OrientedLineHits(const cv::Point* line, int samples, const OrientedEdges& edges);

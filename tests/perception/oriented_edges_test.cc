@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <opencv2/imgproc.hpp>
@@ -27,7 +28,7 @@ TEST(OrientedEdgesTest, OrientationBinIsAtan2sBinForEverySobelGradient) {
     }
   }
   EXPECT_EQ(mismatches, 0);
-  // Line directions in pixels (OrientedLineSupport): larger integers, sampled.
+  // Line directions in pixels (OrientedLineHits): larger integers, sampled.
   std::mt19937 rng(7);
   std::uniform_int_distribution<int> coordinate(-20000, 20000);
   for (int i = 0; i < 200000; ++i) {
@@ -100,6 +101,34 @@ TEST(OrientedEdgesTest, BandFromSharedImageEdges) {
   ImageEdges other;
   EXPECT_FALSE(ComputeImageEdges(cv::Mat(), &other));
   EXPECT_FALSE(ComputeImageEdges(cv::Mat(10, 10, CV_32FC3, cv::Scalar(0, 0, 0)), &other));
+}
+
+// A horizontal edge (a dark lower half): samples along it hit, those beside it or across it
+// (a vertical line through it) do not; Fraction divides by at least `at_least`, and gives 0
+// below 8 visible samples. Counts by hand.
+TEST(OrientedEdgesTest, LineHitsCountTheSamplesOnEdgesAlongTheLine) {
+  cv::Mat image(60, 100, CV_8UC3, cv::Scalar(200, 200, 200));
+  image.rowRange(30, 60).setTo(cv::Scalar(40, 40, 40));
+  const OrientedEdges edges = ComputeOrientedEdges(image, 10, 50);
+  std::vector<cv::Point> along, beside, across;
+  for (int i = 0; i < 40; ++i) {
+    along.emplace_back(10 + 2 * i, 30);
+    beside.emplace_back(10 + 2 * i, 20);
+    across.emplace_back(50, 11 + i);
+  }
+  along[5] = cv::Point(-1, -1);  // Not visible.
+  const LineHits on = OrientedLineHits(along.data(), 40, edges);
+  EXPECT_EQ(on.visible, 39);
+  EXPECT_EQ(on.hits, 39);
+  EXPECT_DOUBLE_EQ(on.Fraction(20), 1.0);
+  EXPECT_DOUBLE_EQ(on.Fraction(78), 0.5);
+  EXPECT_EQ(OrientedLineHits(beside.data(), 40, edges).hits, 0);
+  // The vertical line crosses the edge: at most its samples within 1 px of row 30, which run
+  // across the edge, not along it.
+  EXPECT_EQ(OrientedLineHits(across.data(), 40, edges).hits, 0);
+  const LineHits few = OrientedLineHits(along.data(), 7, edges);
+  EXPECT_EQ(few.visible, 6);
+  EXPECT_EQ(few.Fraction(1), 0.0);
 }
 
 }  // namespace
