@@ -174,27 +174,24 @@ Status DetectCeiling(const cv::Mat& bgr, const Camera& camera, const CorridorGeo
   const OrientedEdges edges = ComputeOrientedEdges(bgr, lines.top - 2, lines.bottom + 3, shared);
   const int band_top = edges.top, band_bottom = edges.top + edges.edges.rows;
 
-  double best_score = 0, best_left = 0, best_right = 0;
+  double best_score = 0;
   size_t best = 0;
   LineHits best_hits[2];
   for (size_t k = 0; k < lines.heights.size(); ++k) {
     const LineHits hits[2] = {OrientedLineHits(lines.Line(k, 0), lines.samples, edges),
                               OrientedLineHits(lines.Line(k, 1), lines.samples, edges)};
-    const double left = hits[0].Fraction(lines.samples / 2);
-    const double right = hits[1].Fraction(lines.samples / 2);
-    const double support[2] = {left, right};
+    const double support[2] = {hits[0].Fraction(lines.samples / 2),
+                               hits[1].Fraction(lines.samples / 2)};
     for (int side = 0; side < 2; ++side) {
       if (support[side] > estimate->side_support[side]) {
         estimate->side_support[side] = support[side];
         estimate->side_height[side] = lines.heights[k];
       }
     }
-    const double score = left + right;
+    const double score = support[0] + support[1];
     if (score > best_score) {
       best_score = score;
       best = k;
-      best_left = left;
-      best_right = right;
       best_hits[0] = hits[0];
       best_hits[1] = hits[1];
     }
@@ -203,8 +200,8 @@ Status DetectCeiling(const cv::Mat& bgr, const Camera& camera, const CorridorGeo
   // chosen lines are there is judged on the samples in view (at least min_counted_fraction).
   const int counted = std::max(
       1, static_cast<int>(std::lround(o.min_counted_fraction * lines.samples)));
-  best_left = best_hits[0].Fraction(counted);
-  best_right = best_hits[1].Fraction(counted);
+  const double best_left = best_hits[0].Fraction(counted);
+  const double best_right = best_hits[1].Fraction(counted);
   estimate->left_support = best_left;
   estimate->right_support = best_right;
   if (std::max(best_left, best_right) < o.min_support) {

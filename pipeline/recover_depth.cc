@@ -366,21 +366,20 @@ Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* res
   if (search_end_wall && WorkingScale(search.bgr.cols, options_.end_wall.max_work_width) == 1) {
     ComputeImageEdges(search.bgr, &edges);
   }
-  ImageEdges* shared_edges = &edges;
   if (search_ceiling) {
     status = DetectCeiling(search.bgr, search.camera, geometry, options_.ceiling, &result->ceiling,
-                           shared_edges);
+                           &edges);
     if (!status.ok()) return finish(status);
     if (result->ceiling.found) geometry.ceiling_height = result->ceiling.height;
     bool lower_taken = false;
     if (options_.ceiling_checks_baseboards && result->junctions.status.ok() &&
         !result->width_held) {
-      lower_taken = CheckBaseboards(camera, search, shared_edges, &geometry, result);
+      lower_taken = CheckBaseboards(camera, search, &edges, &geometry, result);
     }
     // A lower line taken has made the two ceiling sides agree: nothing for the inner-line check.
     if (options_.ceiling_checks_inner_lines && result->junctions.status.ok() &&
         !result->width_held && !lower_taken) {
-      status = MoveInnerWall(search, shared_edges, previous, &geometry, result);
+      status = MoveInnerWall(search, &edges, previous, &geometry, result);
       if (!status.ok()) return finish(status);
     }
     HoldCeiling(previous, options_.max_ceiling_disagreement, options_.ceiling.min_support,
@@ -391,7 +390,7 @@ Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* res
   if (search_end_wall) {
     status =
         DetectEndWall(search.bgr, search.camera, geometry, options_.end_wall, &result->end_wall,
-                      shared_edges);
+                      &edges);
     if (!status.ok()) return finish(status);
     if (result->end_wall.found) geometry.end_distance = result->end_wall.distance;
   }
