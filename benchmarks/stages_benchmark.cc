@@ -2,6 +2,8 @@
 // sizes: Stages/<stage>[/<variant>]/<width>x<height>.
 //   detect      DetectJunctions (the edge-extraction thread's work)
 //   segments    its first part: blur, colour gradient, Canny and Hough on the ROI
+//   canny/NAME  Canny's suppression and hysteresis on the ROI's colour derivatives: `own`
+//               (CannyFromGradients) or `opencv` (cv::Canny), the same edges
 //   appearance  its floor-appearance cues: SampleFloor and the BoundaryScore of every merged line
 //               of the ROI (Lab of the sampled pixels only)
 //   ceiling     DetectCeiling on the frame's true walls
@@ -19,6 +21,8 @@
 
 #include "benchmarks/bench_frames.h"
 #include "perception/appearance.h"
+#include "perception/canny_edges.h"
+#include "perception/color_gradient.h"
 #include "perception/ceiling_detector.h"
 #include "perception/end_wall_detector.h"
 #include "perception/line_segments.h"
@@ -48,6 +52,21 @@ void Segments(benchmark::State& state, int width, int height) {
   for (auto _ : state) {
     const EdgeSegments found = DetectSegments(input.frame.bgr, height / 2, options);
     benchmark::DoNotOptimize(found.segments.data());
+  }
+}
+
+void Canny(benchmark::State& state, bool own, int width, int height) {
+  cv::setNumThreads(1);
+  const bench::BenchFrame& input = bench::PaperLikeFrame(width, height);
+  cv::Mat dx, dy, edges;
+  ColorGradient(input.frame.bgr.rowRange(height / 2, height), &dx, &dy, nullptr);
+  for (auto _ : state) {
+    if (own) {
+      CannyFromGradients(dx, dy, 40, 100, false, &edges);
+    } else {
+      cv::Canny(dx, dy, edges, 40, 100, false);
+    }
+    benchmark::DoNotOptimize(edges.data);
   }
 }
 
@@ -183,6 +202,11 @@ const bool registered = [] {
         ->Unit(benchmark::kMicrosecond);
     benchmark::RegisterBenchmark(("Stages/segments" + suffix).c_str(), Segments, w, h)
         ->Unit(benchmark::kMicrosecond);
+    for (const bool own : {true, false}) {
+      benchmark::RegisterBenchmark(
+          ("Stages/canny/" + std::string(own ? "own" : "opencv") + suffix).c_str(), Canny, own, w, h)
+          ->Unit(benchmark::kMicrosecond);
+    }
     benchmark::RegisterBenchmark(("Stages/appearance" + suffix).c_str(), Appearance, w, h)
         ->Unit(benchmark::kMicrosecond);
     benchmark::RegisterBenchmark(("Stages/ceiling" + suffix).c_str(), Ceiling, w, h)

@@ -7,6 +7,7 @@
 #include <Eigen/Geometry>
 #include <opencv2/imgproc.hpp>
 
+#include "perception/canny_edges.h"
 #include "perception/color_gradient.h"
 #include "perception/oriented_hough.h"
 
@@ -60,7 +61,7 @@ EdgeSegments DetectSegments(const cv::Mat& image, int roi_top, const SegmentOpti
                                                options.auto_percentile))
                 : options.canny_high;
   out.canny_high = high;
-  cv::Canny(dx, dy, out.edges, options.canny_low_ratio * high, high, false);
+  CannyFromGradients(dx, dy, options.canny_low_ratio * high, high, false, &out.edges);
   out.dx = dx;
   out.dy = dy;
   std::vector<cv::Vec4i> lines;

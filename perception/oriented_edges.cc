@@ -6,6 +6,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "perception/binomial_blur.h"
+#include "perception/canny_edges.h"
 #include "perception/color_gradient.h"
 
 namespace corridor {
@@ -41,8 +42,7 @@ bool ColorCannyEdges(const cv::Mat& bgr, int from, int to, cv::Mat* dx, cv::Mat*
   cv::Mat smooth;
   if (!BinomialBlur(bgr, from, to, 5, &smooth).ok()) return false;
   ColorGradient(smooth, dx, dy, nullptr);
-  cv::Canny(*dx, *dy, *edges, 20, 60, true);
-  return true;
+  return CannyFromGradients(*dx, *dy, 20, 60, true, edges).ok();
 }
 
 bool ImageEdges::Covers(const cv::Mat& image, int bottom) const {
