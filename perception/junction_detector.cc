@@ -13,6 +13,7 @@
 #include "perception/floor_texture.h"
 #include "perception/junction_selector.h"
 #include "perception/line_segments.h"
+#include "perception/robust_line_fit.h"
 #include "perception/working_image.h"
 
 namespace corridor {
@@ -44,71 +45,6 @@ void SupportPixels(const std::vector<Eigen::Vector2d>& side, const Eigen::Vector
   }
 }
 
-// Weighted sums of a point set about an anchor (its first point, against cancellation).
-struct Moments {
-  double sw = 0, su = 0, sv = 0, suu = 0, suv = 0, svv = 0;
-
-  void Add(double w, double u, double v) {
-    sw += w;
-    su += w * u;
-    sv += w * v;
-    suu += w * u * u;
-    suv += w * u * v;
-    svv += w * v * v;
-  }
-
-  // The total least squares line of the sums, normalised with b >= 0.
-  Eigen::Vector3d Line(const Eigen::Vector2d& anchor) const {
-    const double mu = su / sw, mv = sv / sw;
-    const double cuu = suu / sw - mu * mu, cuv = suv / sw - mu * mv, cvv = svv / sw - mv * mv;
-    // Direction of the largest spread; the normal is perpendicular to it.
-    const double angle = 0.5 * std::atan2(2 * cuv, cuu - cvv);
-    Eigen::Vector3d l(-std::sin(angle), std::cos(angle), 0);
-    l.z() = -(l.x() * (mu + anchor.x()) + l.y() * (mv + anchor.y()));
-    if (l.y() < 0) l = -l;
-    return l;
-  }
-};
-
-// The line with the least sum of distances to the points, as cv::fitLine(DIST_HUBER) picks it
-// among its iterates: iteratively reweighted total least squares from the unweighted fit, first
-// with Huber weights min(1, 1.345 / d), then with L1 weights 1 / max(d, 0.05), keeping the
-// iterate with the least sum; false when too few points. One deterministic start, where
-// cv::fitLine tries 20 random ones. Each iteration is one pass over the points: the distances to
-// the current line, their sum and the next line's weighted sums together.
-bool RefitLine(const std::vector<Eigen::Vector2d>& points, Eigen::Vector3d* line) {
-  if (points.size() < 8) return false;
-  constexpr double kHuber = 1.345, kMinDistance = 0.05;
-  const Eigen::Vector2d anchor = points.front();
-  Moments unweighted;
-  for (const auto& p : points) unweighted.Add(1.0, p.x() - anchor.x(), p.y() - anchor.y());
-  Eigen::Vector3d l = unweighted.Line(anchor), best = l;
-  double best_sum = 1e300;
-  bool l1 = false;  // Huber weights until they converge, then L1 weights.
-  for (int iteration = 0; iteration < 60; ++iteration) {
-    double sum = 0;
-    Moments weighted;
-    for (const auto& p : points) {
-      const double d = std::abs(l.dot(p.homogeneous()));
-      sum += d;
-      const double w = l1 ? 1.0 / std::max(d, kMinDistance) : (d < kHuber ? 1.0 : kHuber / d);
-      weighted.Add(w, p.x() - anchor.x(), p.y() - anchor.y());
-    }
-    if (sum < best_sum) {
-      best_sum = sum;
-      best = l;
-    }
-    const Eigen::Vector3d next = weighted.Line(anchor);
-    const bool converged = (next - l).cwiseAbs().maxCoeff() < 1e-6;
-    l = next;
-    if (converged && l1) break;
-    if (converged) l1 = true;
-  }
-  if (!best.allFinite()) return false;
-  *line = best;
-  return true;
-}
-
 // The final JunctionLine: refit on nearby edge pixels, extent and confidence.
 JunctionLine Refine(const JunctionCandidate& candidate, const std::vector<Eigen::Vector2d>& edges,
                     const Eigen::Vector2d& vp, bool left, double distance,
@@ -120,13 +56,13 @@ JunctionLine Refine(const JunctionCandidate& candidate, const std::vector<Eigen:
   bool final_support = false;  // True once `support` is the final (distance, line) support.
   for (int round = 0; round < 3; ++round) {
     SupportPixels(side, line, round == 0 ? 2 * distance : distance, &support);
-    // The same pixels give the same fit (RefitLine is deterministic): the line has converged.
+    // The same pixels give the same fit (FitLineLeastDistance is deterministic): the line has converged.
     if (round > 0 && support == fitted) {
       final_support = true;
       break;
     }
     Eigen::Vector3d refit;
-    if (!RefitLine(support, &refit)) break;
+    if (!FitLineLeastDistance(support, &refit)) break;
     line = refit;
     fitted.swap(support);
   }
