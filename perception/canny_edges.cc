@@ -9,12 +9,18 @@
 
 #include "core/cpu_features.h"
 
+#ifdef CORRIDOR_AVX2_VARIANTS
+#include <immintrin.h>
+#endif
+
 namespace corridor {
 namespace {
 
 // tan(22.5 degrees) in 15-bit fixed point: the direction test compares |dy| << 15 with it.
 constexpr int64_t kTan22 = 13573;
 constexpr int kShift = 15;
+
+constexpr uint32_t kMaxMagnitude = 0x7fffffff;
 
 // The map's states, as OpenCV's: 0 a pixel that may join an edge, 1 one that cannot, 2 an edge.
 constexpr uint8_t kMaybe = 0, kNever = 1, kEdge = 2;
@@ -28,8 +34,10 @@ CORRIDOR_ALWAYS_INLINE inline void MagnitudeBody(const int16_t* dx, const int16_
                                                  uint8_t* __restrict candidate) {
   for (int j = 0; j < n; ++j) {
     const int32_t x = dx[j], y = dy[j];
-    const uint32_t magnitude = kL2 ? static_cast<uint32_t>(x * x) + static_cast<uint32_t>(y * y)
-                                   : static_cast<uint32_t>(std::abs(x) + std::abs(y));
+    // At most 2^31 - 1 (only dx = dy = -32768 would reach 2^31): a signed 32-bit integer.
+    const uint32_t magnitude =
+        kL2 ? std::min(static_cast<uint32_t>(x * x) + static_cast<uint32_t>(y * y), kMaxMagnitude)
+            : static_cast<uint32_t>(std::abs(x) + std::abs(y));
     m[j] = magnitude;
     candidate[j] = magnitude >= least ? 1 : 0;
   }
@@ -88,6 +96,121 @@ inline bool IsMaximum(uint32_t m, int16_t x, int16_t y, const uint32_t* above,
   return m > above[j - s] && m > below[j + s];
 }
 
+// The rows around the one being suppressed: magnitudes above, at and below it (each readable
+// one pixel before and kBlock - 1 after the image's), its derivatives, and which of its pixels
+// exceed the low threshold (candidate[j] = 1, readable to a whole word of 8).
+struct RowView {
+  const uint32_t* above;
+  const uint32_t* centre;
+  const uint32_t* below;
+  const int16_t* x;
+  const int16_t* y;
+  const uint8_t* candidate;
+};
+
+// Pixel j of the row, a candidate and a maximum: into the map as an edge (pushed on the stack)
+// when above `high`, as a maybe otherwise.
+inline void Keep(uint32_t m, int64_t high, int at, uint8_t* map, std::vector<int>* stack) {
+  if (static_cast<int64_t>(m) > high) {
+    map[at] = kEdge;
+    stack->push_back(at);
+  } else {
+    map[at] = kMaybe;
+  }
+}
+
+// Non-maximum suppression of the candidates of pixels [from, cols), one at a time; `base` is
+// pixel 0's index in the map.
+void SuppressRow(const RowView& r, int from, int cols, int64_t high, int base, uint8_t* map,
+                 std::vector<int>* stack) {
+  for (int w = from / 8; 8 * w < cols; ++w) {
+    uint64_t word;
+    std::memcpy(&word, r.candidate + 8 * w, 8);
+    for (; word != 0; word &= word - 1) {
+      const int j = 8 * w + (__builtin_ctzll(word) >> 3);
+      if (j < from || j >= cols) continue;
+      const uint32_t m = r.centre[j];
+      if (IsMaximum(m, r.x[j], r.y[j], r.above, r.centre, r.below, j)) {
+        Keep(m, high, base + j, map, stack);
+      }
+    }
+  }
+}
+
+#ifdef CORRIDOR_AVX2_VARIANTS
+__attribute__((target("avx2"))) inline __m256i Load(const uint32_t* p) {
+  return _mm256_loadu_si256(reinterpret_cast<const __m256i*>(p));
+}
+
+// Eight 16-bit values widened to 32 bits.
+__attribute__((target("avx2"))) inline __m256i LoadWidened(const int16_t* p) {
+  return _mm256_cvtepi16_epi32(_mm_loadu_si128(reinterpret_cast<const __m128i*>(p)));
+}
+
+// m > a && m >= b, lane by lane, as masks.
+__attribute__((target("avx2"))) inline __m256i GreaterThenAtLeast(__m256i m, __m256i a, __m256i b) {
+  return _mm256_andnot_si256(_mm256_cmpgt_epi32(b, m), _mm256_cmpgt_epi32(m, a));
+}
+
+// The same, eight pixels a step in AVX2 registers with IsMaximum's tests (32-bit: |dy| << 15 and
+// |dx| * tan22 fit; |dx| << 16 is taken of min(|dx|, 32767), which changes no comparison), then
+// the remaining pixels one at a time.
+__attribute__((target("avx2"))) void SuppressRowAvx2(const RowView& r, int cols, int64_t low,
+                                                     int64_t high, int base, uint8_t* map,
+                                                     std::vector<int>* stack) {
+  const __m256i low_v =
+      _mm256_set1_epi32(static_cast<int32_t>(std::min<int64_t>(low, kMaxMagnitude)));
+  const __m256i high_v =
+      _mm256_set1_epi32(static_cast<int32_t>(std::min<int64_t>(high, kMaxMagnitude)));
+  const __m256i tan22 = _mm256_set1_epi32(static_cast<int32_t>(kTan22));
+  const __m256i max_dx = _mm256_set1_epi32(32767), zero = _mm256_setzero_si256();
+  int j = 0;
+  for (; j + 8 <= cols; j += 8) {
+    uint64_t word;
+    std::memcpy(&word, r.candidate + j, 8);
+    if (word == 0) continue;
+    const __m256i m = Load(r.centre + j);
+    const __m256i x = LoadWidened(r.x + j);
+    const __m256i y = LoadWidened(r.y + j);
+    const __m256i ax = _mm256_abs_epi32(x);
+    const __m256i ay = _mm256_slli_epi32(_mm256_abs_epi32(y), kShift);
+    const __m256i tan22x = _mm256_mullo_epi32(ax, tan22);
+    const __m256i horizontal = _mm256_cmpgt_epi32(tan22x, ay);  // ay < tan22x
+    const __m256i ax_high = _mm256_slli_epi32(_mm256_min_epi32(ax, max_dx), kShift + 1);
+    const __m256i vertical = _mm256_andnot_si256(
+        horizontal, _mm256_cmpgt_epi32(_mm256_sub_epi32(ay, tan22x), ax_high));
+    const __m256i along_row =
+        GreaterThenAtLeast(m, Load(r.centre + j - 1), Load(r.centre + j + 1));
+    const __m256i along_column = GreaterThenAtLeast(m, Load(r.above + j), Load(r.below + j));
+    // Diagonals: s = -1 where dx and dy differ in sign (above right, below left), else +1.
+    const __m256i opposite = _mm256_cmpgt_epi32(zero, _mm256_xor_si256(x, y));
+    const __m256i diagonal_above =
+        _mm256_blendv_epi8(Load(r.above + j - 1), Load(r.above + j + 1), opposite);
+    const __m256i diagonal_below =
+        _mm256_blendv_epi8(Load(r.below + j + 1), Load(r.below + j - 1), opposite);
+    const __m256i diagonal = _mm256_and_si256(_mm256_cmpgt_epi32(m, diagonal_above),
+                                              _mm256_cmpgt_epi32(m, diagonal_below));
+    const __m256i maximum = _mm256_blendv_epi8(
+        _mm256_blendv_epi8(diagonal, along_column, vertical), along_row, horizontal);
+    const __m256i kept = _mm256_and_si256(maximum, _mm256_cmpgt_epi32(m, low_v));
+    int kept_bits = _mm256_movemask_ps(_mm256_castsi256_ps(kept));
+    if (kept_bits == 0) continue;
+    const int strong_bits = _mm256_movemask_ps(
+        _mm256_castsi256_ps(_mm256_and_si256(kept, _mm256_cmpgt_epi32(m, high_v))));
+    for (; kept_bits != 0; kept_bits &= kept_bits - 1) {
+      const int b = __builtin_ctz(kept_bits);
+      if (strong_bits & (1 << b)) {
+        map[base + j + b] = kEdge;
+        stack->push_back(base + j + b);
+      } else {
+        map[base + j + b] = kMaybe;
+      }
+    }
+  }
+  SuppressRow(r, j, cols, high, base, map, stack);
+}
+#endif
+
 }  // namespace
 
 Status CannyFromGradients(const cv::Mat& dx, const cv::Mat& dy, double low, double high, bool l2,
@@ -102,17 +225,21 @@ Status CannyFromGradients(const cv::Mat& dx, const cv::Mat& dy, double low, doub
   MagnitudeFn magnitude = l2 ? MagnitudeRow<true> : MagnitudeRow<false>;
   EdgeRowFn edge_row = EdgeRow;
 #ifdef CORRIDOR_AVX2_VARIANTS
-  if (CpuHasAvx2()) {
+  const bool avx2 = CpuHasAvx2();
+  if (avx2) {
     magnitude = l2 ? MagnitudeRowAvx2<true> : MagnitudeRowAvx2<false>;
     edge_row = EdgeRowAvx2;
   }
 #endif
 
-  // Three rows of magnitudes, each with a zero before and after; a row outside the image is zero.
-  // Beside them, the centre and next rows' candidates (magnitude above `low`), padded to whole
-  // words of 8 so that the scan below reads 8 at a time.
-  std::vector<uint32_t> ring(3 * static_cast<size_t>(step), 0);
-  uint32_t* row_mag[3] = {ring.data() + 1, ring.data() + step + 1, ring.data() + 2 * step + 1};
+  // Three rows of magnitudes, each with a zero before and eight after (the last pixel's
+  // neighbours in a register); a row outside the image is zero. Beside them, the centre and next
+  // rows' candidates (magnitude above `low`), padded to whole words of 8 so that the scan reads 8
+  // at a time.
+  const int ring_step = cols + 9;
+  std::vector<uint32_t> ring(3 * static_cast<size_t>(ring_step), 0);
+  uint32_t* row_mag[3] = {ring.data() + 1, ring.data() + ring_step + 1,
+                          ring.data() + 2 * ring_step + 1};
   const int words = (cols + 7) / 8;
   std::vector<uint8_t> candidates(2 * 8 * static_cast<size_t>(words), 0);
   uint8_t* row_candidate[2] = {candidates.data(), candidates.data() + 8 * words};
@@ -133,25 +260,18 @@ Status CannyFromGradients(const cv::Mat& dx, const cv::Mat& dy, double low, doub
     } else {
       std::fill(below, below + cols, 0u);
     }
-    const int16_t* x = dx.ptr<int16_t>(i);
-    const int16_t* y = dy.ptr<int16_t>(i);
+    const RowView view{above, centre, below, dx.ptr<int16_t>(i), dy.ptr<int16_t>(i),
+                       row_candidate[0]};
     const int base = (i + 1) * step + 1;
-    const uint8_t* candidate = row_candidate[0];
-    for (int w = 0; w < words; ++w) {
-      uint64_t word;
-      std::memcpy(&word, candidate + 8 * w, 8);
-      for (; word != 0; word &= word - 1) {
-        const int j = 8 * w + (__builtin_ctzll(word) >> 3);
-        const uint32_t m = centre[j];
-        if (!IsMaximum(m, x[j], y[j], above, centre, below, j)) continue;
-        if (static_cast<int64_t>(m) > high_m) {
-          map[base + j] = kEdge;
-          stack.push_back(base + j);
-        } else {
-          map[base + j] = kMaybe;
-        }
-      }
+#ifdef CORRIDOR_AVX2_VARIANTS
+    if (avx2) {
+      SuppressRowAvx2(view, cols, low_m, high_m, base, map.data(), &stack);
+    } else {
+      SuppressRow(view, 0, cols, high_m, base, map.data(), &stack);
     }
+#else
+    SuppressRow(view, 0, cols, high_m, base, map.data(), &stack);
+#endif
     // Scroll: the centre row becomes the one above, the row below the centre.
     row_mag[0] = centre;
     row_mag[1] = below;

@@ -68,7 +68,8 @@ TEST(RobustLineFitTest, SumOfDistancesAsSmallAsOpenCvsL1Fit) {
     ASSERT_TRUE(FitLineLeastDistance(points, &line));
     cv::Vec4f fitted;
     cv::fitLine(cv_points, fitted, cv::DIST_L1, 0, 0.01, 0.01);
-    const Eigen::Vector3d opencv(-fitted[1], fitted[0], fitted[1] * fitted[2] - fitted[0] * fitted[3]);
+    const Eigen::Vector3d opencv(-fitted[1], fitted[0],
+                                 fitted[1] * fitted[2] - fitted[0] * fitted[3]);
     EXPECT_LE(SumOfDistances(points, line), 1.005 * SumOfDistances(points, opencv)) << trial;
   }
 }
