@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include <opencv2/imgproc.hpp>
 
@@ -17,6 +18,27 @@ constexpr int kBandMargin = 8;
 // Rows a cache of edges reaches below the band that filled it, in hundredths of the image's
 // height: a later search of the frame, with the walls moved, reaches a little farther down.
 constexpr int kCacheSlackPercent = 4;
+
+// out(r, u) = the OR of bits over the 3x3 pixels around (r, u) inside the image: the OR of three
+// neighbours along each row, then of three such rows.
+void OrNeighbourhoods(const cv::Mat& bits, cv::Mat* out) {
+  const int rows = bits.rows, cols = bits.cols;
+  std::vector<uchar> along((rows + 2) * static_cast<size_t>(cols), 0);  // A zero row each end.
+  for (int r = 0; r < rows; ++r) {
+    const uchar* b = bits.ptr<uchar>(r);
+    uchar* h = along.data() + (r + 1) * static_cast<size_t>(cols);
+    h[0] = static_cast<uchar>(b[0] | (cols > 1 ? b[1] : 0));
+    for (int u = 1; u + 1 < cols; ++u) h[u] = static_cast<uchar>(b[u - 1] | b[u] | b[u + 1]);
+    if (cols > 1) h[cols - 1] = static_cast<uchar>(b[cols - 2] | b[cols - 1]);
+  }
+  for (int r = 0; r < rows; ++r) {
+    const uchar* above = along.data() + r * static_cast<size_t>(cols);
+    const uchar* centre = above + cols;
+    const uchar* below = centre + cols;
+    uchar* o = out->ptr<uchar>(r);
+    for (int u = 0; u < cols; ++u) o[u] = static_cast<uchar>(above[u] | centre[u] | below[u]);
+  }
+}
 
 }  // namespace
 
@@ -108,17 +130,8 @@ OrientedEdges ComputeOrientedEdges(const cv::Mat& bgr, int top, int bottom, Imag
       if (e[u] != 0) b[u] = static_cast<uchar>(1u << OrientationBin(gx[u], gy[u]));
     }
   }
-  out.near = bits.clone();
-  for (int dv = -1; dv <= 1; ++dv) {
-    for (int du = -1; du <= 1; ++du) {
-      const cv::Rect source(std::max(0, du), std::max(0, dv), band.width - std::abs(du),
-                            band.height - std::abs(dv));
-      if ((dv == 0 && du == 0) || source.width <= 0 || source.height <= 0) continue;
-      const cv::Rect target(std::max(0, -du), std::max(0, -dv), source.width, source.height);
-      cv::Mat into = out.near(target);
-      cv::bitwise_or(into, bits(source), into);
-    }
-  }
+  out.near.create(band.size(), CV_8U);
+  OrNeighbourhoods(bits, &out.near);
   return out;
 }
 

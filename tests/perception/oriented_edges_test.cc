@@ -80,6 +80,24 @@ TEST(OrientedEdgesTest, BandFromSharedImageEdges) {
     }
   }
   EXPECT_GT(checked, 100);
+  // And nothing else: each pixel's bits are exactly those of the edges around it in the band.
+  int mismatches = 0;
+  for (int v = 0; v < band.edges.rows; ++v) {
+    for (int u = 0; u < band.edges.cols; ++u) {
+      int expected = 0;
+      for (int dv = -1; dv <= 1; ++dv) {
+        for (int du = -1; du <= 1; ++du) {
+          const int vv = v + dv, uu = u + du;
+          if (vv < 0 || vv >= band.edges.rows || uu < 0 || uu >= band.edges.cols) continue;
+          if (band.edges.at<uchar>(vv, uu) == 0) continue;
+          expected |= 1 << OrientationBin(shared.dx.at<short>(vv + 25, uu),
+                                          shared.dy.at<short>(vv + 25, uu));
+        }
+      }
+      if (band.near.at<uchar>(v, u) != expected) ++mismatches;
+    }
+  }
+  EXPECT_EQ(mismatches, 0);
   // As a cache: edges of another image size are replaced by the image's rows from the top down
   // to a little below the band; a later band inside them reuses them, one below them refills.
   ImageEdges cache;
