@@ -31,7 +31,7 @@ struct SearchLines {
 };
 
 // Projects the points (x, y, z[i]) of one searched line of an undistorted camera, four at a time,
-// into out[i] (left as it is where not visible); returns how many it did (a multiple of four; the
+// into out[i] ((-1, -1) where not visible); returns how many it did (a multiple of four; the
 // caller projects the rest). The same operations as ProjectCorridorPoint with a 1 px margin
 // (rotation as ToCamera adds it, then f x / z + c, then cvRound's rounding to nearest even; no
 // FMA), so the same pixels.
@@ -79,7 +79,7 @@ __attribute__((target("avx2"))) int ProjectRowAvx2(const Camera& camera,
     _mm_store_si128(reinterpret_cast<__m128i*>(pv), vi);
     _mm_store_si128(reinterpret_cast<__m128i*>(keep), ok);
     for (int k = 0; k < 4; ++k) {
-      if (keep[k] != 0) out[i + k] = cv::Point(pu[k], pv[k]);
+      out[i + k] = keep[k] != 0 ? cv::Point(pu[k], pv[k]) : cv::Point(-1, -1);
     }
   }
   return i;
@@ -111,7 +111,8 @@ void ProjectSearchLines(const Camera& camera, const CorridorGeometry& g,
                        (1.0 / o.far_distance - 1.0 / o.near_distance) * i / (o.samples - 1.0);
     depths[i] = 1.0 / inv;
   }
-  lines->pixels.assign(lines->heights.size() * 2 * o.samples, cv::Point(-1, -1));
+  // Every point is written below; the buffer keeps its memory from the thread's last search.
+  lines->pixels.resize(lines->heights.size() * 2 * o.samples);
   lines->top = camera.image_height;
   lines->bottom = -1;
   const bool distorted = camera.HasDistortion();
@@ -124,9 +125,9 @@ void ProjectSearchLines(const Camera& camera, const CorridorGeometry& g,
       if (fast != nullptr) i = fast(camera, r, wall_x[side], y, depths.data(), o.samples, out);
       for (; i < o.samples; ++i) {
         cv::Point p;
-        if (ProjectCorridorPoint(camera, distorted, r, wall_x[side], y, depths[i], 1, &p)) {
-          out[i] = p;
-        }
+        const bool seen =
+            ProjectCorridorPoint(camera, distorted, r, wall_x[side], y, depths[i], 1, &p);
+        out[i] = seen ? p : cv::Point(-1, -1);
       }
       for (int k = 0; k < o.samples; ++k) {
         if (out[k].x < 0) continue;
@@ -165,7 +166,9 @@ Status DetectCeiling(const cv::Mat& bgr, const Camera& camera, const CorridorGeo
     return Status::InvalidArgument("ceiling detector: image does not match the camera");
   }
   // Every candidate line is projected once; edges are computed only on the rows they cross.
-  SearchLines lines;
+  // Per thread, so that its half a megabyte of pixels is allocated once, not every search.
+  thread_local SearchLines lines;
+  lines = SearchLines{{}, 0, std::move(lines.pixels), 0, -1};
   ProjectSearchLines(camera, g, o, &lines);
   if (lines.bottom < lines.top) {
     estimate->reason = "no ceiling/wall junction follows the image's edges";
