@@ -55,15 +55,15 @@ class Accumulator {
   // `bin`; returns the fullest of them, and its angle in *best_angle.
   int Vote(int u, int v, int bin, int* best_angle) {
     const int first = Cells(u, v, bin);
-    int best = 0;
+    int best = 0, best_k = 0;
     for (int k = 0; k <= 2 * window_; ++k) {
-      int16_t& cell = votes_[cells_[k]];
-      ++cell;
-      if (cell > best) {
-        best = cell;
-        *best_angle = (first + k) % kAngles;
-      }
+      const int cell = ++votes_[cells_[k]];
+      // The first fullest bin, without a branch (which the votes' order makes unpredictable).
+      const bool fuller = cell > best;
+      best = fuller ? cell : best;
+      best_k = fuller ? k : best_k;
     }
+    *best_angle = (first + best_k) % kAngles;  // A vote adds to at least one bin: best >= 1.
     return best;
   }
 
