@@ -26,23 +26,29 @@ constexpr long kMinFloorPixels = 200;  // Fewer floor pixels (working resolution
 // or right of it, and below it), in the edge map's order.
 std::vector<Eigen::Vector2d> FloorSidePixels(const std::vector<Eigen::Vector2d>& edges,
                                              const Eigen::Vector2d& vp, bool left) {
-  std::vector<Eigen::Vector2d> side;
-  side.reserve(edges.size());
+  // Every pixel written, the count advanced only for the kept ones: no branch on where the
+  // pixels lie, which edge maps make unpredictable.
+  std::vector<Eigen::Vector2d> side(edges.size());
+  size_t kept = 0;
   for (const auto& p : edges) {
-    if (left ? p.x() > vp.x() : p.x() < vp.x()) continue;
-    if (p.y() < vp.y()) continue;
-    side.push_back(p);
+    side[kept] = p;
+    const bool beyond = left ? p.x() > vp.x() : p.x() < vp.x();
+    kept += static_cast<size_t>(!beyond & !(p.y() < vp.y()));
   }
+  side.resize(kept);
   return side;
 }
 
 // The pixels of `side` within `distance` of the line, in order.
 void SupportPixels(const std::vector<Eigen::Vector2d>& side, const Eigen::Vector3d& line,
                    double distance, std::vector<Eigen::Vector2d>* support) {
-  support->clear();
+  support->resize(side.size());  // As FloorSidePixels: written always, counted when kept.
+  size_t kept = 0;
   for (const auto& p : side) {
-    if (!(std::abs(line.dot(p.homogeneous())) > distance)) support->push_back(p);
+    (*support)[kept] = p;
+    kept += static_cast<size_t>(!(std::abs(line.dot(p.homogeneous())) > distance));
   }
+  support->resize(kept);
 }
 
 // The final JunctionLine: refit on nearby edge pixels, extent and confidence.
