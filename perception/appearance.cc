@@ -1,6 +1,7 @@
 #include "perception/appearance.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -15,6 +16,18 @@ float Median(std::vector<float>* values) {
   auto mid = values->begin() + values->size() / 2;
   std::nth_element(values->begin(), mid, values->end());
   return *mid;
+}
+
+// The element Median would return (index n / 2 of the sorted values) of n byte values, from
+// their counts; 0 when there are none.
+float MiddleByte(const std::array<int, 256>& counts, size_t n) {
+  if (n == 0) return 0.0f;
+  size_t seen = 0;
+  for (int value = 0; value < 256; ++value) {
+    seen += static_cast<size_t>(counts[value]);
+    if (seen > n / 2) return static_cast<float>(value);
+  }
+  return 255.0f;
 }
 
 // The mean colour of the 3x3 pixels around image point p (full-image coordinates; `bgr` holds
@@ -66,17 +79,17 @@ FloorAppearance SampleFloor(const cv::Mat& bgr, int roi_top, int step) {
   for (int v = v0; v < rows; v += step) {
     for (int u = u0; u < u1; u += step) patch.push_back(bgr.at<cv::Vec3b>(v, u));
   }
-  std::vector<float> channel[3];
+  // Each channel's median (the middle element, as Median takes it) from a count of its 256
+  // values instead of a partial sort.
+  std::array<std::array<int, 256>, 3> counts{};
   std::vector<cv::Vec3f> pixels;
   pixels.reserve(patch.size());
-  for (int c = 0; c < 3; ++c) channel[c].reserve(patch.size());
   for (const cv::Vec3b& lab : BgrToLab(patch)) {
-    const cv::Vec3f p = lab;
-    pixels.push_back(p);
-    for (int c = 0; c < 3; ++c) channel[c].push_back(p[c]);
+    pixels.push_back(cv::Vec3f(lab));
+    for (int c = 0; c < 3; ++c) ++counts[c][lab[c]];
   }
   FloorAppearance floor;
-  for (int c = 0; c < 3; ++c) floor.lab[c] = Median(&channel[c]);
+  for (int c = 0; c < 3; ++c) floor.lab[c] = MiddleByte(counts[c], pixels.size());
   std::vector<float> distances;
   distances.reserve(pixels.size());
   for (const auto& p : pixels) distances.push_back(LabDistance(p, floor.lab));

@@ -2,7 +2,9 @@
 // boundary score and the band contrast on painted floor/wall images.
 #include "perception/appearance.h"
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <opencv2/imgproc.hpp>
@@ -28,6 +30,33 @@ TEST(AppearanceTest, SampledLabEqualsTheWholeImageConversion) {
     EXPECT_EQ(sampled[k], lab.at<cv::Vec3b>(where[k])) << where[k];
   }
   EXPECT_TRUE(BgrToLab({}).empty());
+}
+
+// The floor's colour: the per-channel median (the middle of the sorted values) of the Lab pixels
+// sampled (every second pixel of every second row) in the bottom 12% of the image's rows and the
+// middle 30% of its columns, computed here by sorting OpenCV's conversion of the whole image.
+TEST(AppearanceTest, FloorColourIsTheWindowsPerChannelMedian) {
+  for (const int seed : {3, 4, 5}) {
+    cv::Mat image(120, 90, CV_8UC3);
+    cv::RNG(seed).fill(image, cv::RNG::UNIFORM, 0, 256);
+    const int roi_top = 40;
+    const cv::Mat roi = image.rowRange(roi_top, image.rows);
+    cv::Mat lab;
+    cv::cvtColor(roi, lab, cv::COLOR_BGR2Lab);
+    const int v0 = static_cast<int>(0.88 * image.rows) - roi_top;
+    const int u0 = static_cast<int>(0.35 * image.cols), u1 = static_cast<int>(0.65 * image.cols);
+    std::vector<float> channel[3];
+    for (int v = v0; v < roi.rows; v += 2) {
+      for (int u = u0; u < u1; u += 2) {
+        for (int c = 0; c < 3; ++c) channel[c].push_back(lab.at<cv::Vec3b>(v, u)[c]);
+      }
+    }
+    const FloorAppearance floor = SampleFloor(roi, roi_top);
+    for (int c = 0; c < 3; ++c) {
+      std::sort(channel[c].begin(), channel[c].end());
+      EXPECT_EQ(floor.lab[c], channel[c][channel[c].size() / 2]) << "seed " << seed << " c " << c;
+    }
+  }
 }
 
 // A grey wall above row 60 and a brown floor below it; the ROI starts at row 40.
