@@ -195,16 +195,16 @@ __attribute__((target("avx2"))) void SuppressRowAvx2(const RowView& r, int cols,
     const __m256i kept = _mm256_and_si256(maximum, _mm256_cmpgt_epi32(m, low_v));
     int kept_bits = _mm256_movemask_ps(_mm256_castsi256_ps(kept));
     if (kept_bits == 0) continue;
-    const int strong_bits = _mm256_movemask_ps(
+    int strong_bits = _mm256_movemask_ps(
         _mm256_castsi256_ps(_mm256_and_si256(kept, _mm256_cmpgt_epi32(m, high_v))));
+    // Every kept pixel a maybe, then the strong ones (a subset) edges: no branch on which is which.
     for (; kept_bits != 0; kept_bits &= kept_bits - 1) {
-      const int b = __builtin_ctz(kept_bits);
-      if (strong_bits & (1 << b)) {
-        map[base + j + b] = kEdge;
-        stack->push_back(base + j + b);
-      } else {
-        map[base + j + b] = kMaybe;
-      }
+      map[base + j + __builtin_ctz(kept_bits)] = kMaybe;
+    }
+    for (; strong_bits != 0; strong_bits &= strong_bits - 1) {
+      const int at = base + j + __builtin_ctz(strong_bits);
+      map[at] = kEdge;
+      stack->push_back(at);
     }
   }
   SuppressRow(r, j, cols, high, base, map, stack);
