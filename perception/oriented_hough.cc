@@ -8,6 +8,7 @@
 #include <opencv2/core.hpp>
 
 #include "perception/edge_scan.h"
+#include "perception/fast_atan2.h"
 #ifdef __SSE2__
 #include <emmintrin.h>
 #endif
@@ -123,7 +124,7 @@ struct HoughScratch {
 
 // The normal's direction of the line through an edge pixel, from its gradient: a bin in [0, 180).
 int GradientBin(short gx, short gy) {
-  float degrees = cv::fastAtan2(static_cast<float>(gy), static_cast<float>(gx));  // [0, 360).
+  float degrees = FastAtan2(static_cast<float>(gy), static_cast<float>(gx));  // [0, 360).
   if (degrees >= 180.f) degrees -= 180.f;
   return cvRound(degrees) % kAngles;
 }
