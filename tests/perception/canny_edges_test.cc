@@ -7,6 +7,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "synth/corridor_renderer.h"
+#include "tests/support/corridor_frame.h"
 
 namespace corridor {
 namespace {
@@ -49,13 +50,12 @@ TEST(CannyEdgesTest, EqualsOpenCvOnRandomDerivatives) {
 
 TEST(CannyEdgesTest, EqualsOpenCvOnACorridorsSobelDerivatives) {
   const Camera camera = Camera::FromHorizontalFov(420, 360, 85.0 * M_PI / 180, 0.7);
-  synth::SceneOptions scene;
-  scene.clutter = 0.1;
-  synth::Frame frame;
-  ASSERT_TRUE(synth::RenderFrame(synth::BuildScene(scene), camera,
-                                 synth::CameraPose{0.05, 0.03, 0.2, 0.7, 3.0}, &frame)
-                  .ok());
+  const synth::SceneOptions defaults;
+  const synth::Frame frame = testing_util::RenderCorridorFrame(
+      camera, defaults.width, defaults.ceiling_height, defaults.seed,
+      synth::CameraPose{0.05, 0.03, 0.2, 0.7, 3.0}, 0.1);
   const cv::Mat& image = frame.bgr;
+  ASSERT_FALSE(image.empty());
   cv::Mat grey, dx, dy;
   cv::cvtColor(image, grey, cv::COLOR_BGR2GRAY);
   cv::Sobel(grey, dx, CV_16S, 1, 0, 3);
