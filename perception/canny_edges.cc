@@ -97,7 +97,7 @@ inline bool IsMaximum(uint32_t m, int16_t x, int16_t y, const uint32_t* above,
 }
 
 // The rows around the one being suppressed: magnitudes above, at and below it (each readable
-// one pixel before and kBlock - 1 after the image's), its derivatives, and which of its pixels
+// one pixel before the image's and eight after), its derivatives, and which of its pixels
 // exceed the low threshold (candidate[j] = 1, readable to a whole word of 8).
 struct RowView {
   const uint32_t* above;
