@@ -203,9 +203,8 @@ const bool registered = [] {
     benchmark::RegisterBenchmark(("Stages/segments" + suffix).c_str(), Segments, w, h)
         ->Unit(benchmark::kMicrosecond);
     for (const bool own : {true, false}) {
-      benchmark::RegisterBenchmark(
-          ("Stages/canny/" + std::string(own ? "own" : "opencv") + suffix).c_str(), Canny, own, w, h)
-          ->Unit(benchmark::kMicrosecond);
+      const std::string name = "Stages/canny/" + std::string(own ? "own" : "opencv") + suffix;
+      benchmark::RegisterBenchmark(name.c_str(), Canny, own, w, h)->Unit(benchmark::kMicrosecond);
     }
     benchmark::RegisterBenchmark(("Stages/appearance" + suffix).c_str(), Appearance, w, h)
         ->Unit(benchmark::kMicrosecond);

@@ -62,7 +62,8 @@ JunctionLine Refine(const JunctionCandidate& candidate, const std::vector<Eigen:
   bool final_support = false;  // True once `support` is the final (distance, line) support.
   for (int round = 0; round < 3; ++round) {
     SupportPixels(side, line, round == 0 ? 2 * distance : distance, &support);
-    // The same pixels give the same fit (FitLineLeastDistance is deterministic): the line has converged.
+    // The same pixels give the same fit (FitLineLeastDistance is deterministic): the line has
+    // converged.
     if (round > 0 && support == fitted) {
       final_support = true;
       break;
