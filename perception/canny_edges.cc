@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/cpu_features.h"
+#include "perception/edge_scan.h"
 
 #ifdef CORRIDOR_AVX2_VARIANTS
 #include <immintrin.h>
@@ -98,7 +99,7 @@ inline bool IsMaximum(uint32_t m, int16_t x, int16_t y, const uint32_t* above,
 
 // The rows around the one being suppressed: magnitudes above, at and below it (each readable
 // one pixel before the image's and eight after), its derivatives, and which of its pixels
-// exceed the low threshold (candidate[j] = 1, readable to a whole word of 8).
+// exceed the low threshold (candidate[j] = 1, else 0).
 struct RowView {
   const uint32_t* above;
   const uint32_t* centre;
@@ -123,18 +124,12 @@ inline void Keep(uint32_t m, int64_t high, int at, uint8_t* map, std::vector<int
 // pixel 0's index in the map.
 void SuppressRow(const RowView& r, int from, int cols, int64_t high, int base, uint8_t* map,
                  std::vector<int>* stack) {
-  for (int w = from / 8; 8 * w < cols; ++w) {
-    uint64_t word;
-    std::memcpy(&word, r.candidate + 8 * w, 8);
-    for (; word != 0; word &= word - 1) {
-      const int j = 8 * w + (__builtin_ctzll(word) >> 3);
-      if (j < from || j >= cols) continue;
-      const uint32_t m = r.centre[j];
-      if (IsMaximum(m, r.x[j], r.y[j], r.above, r.centre, r.below, j)) {
-        Keep(m, high, base + j, map, stack);
-      }
+  ForEachNonZeroByte(r.candidate, from, cols, [&](int j) {
+    const uint32_t m = r.centre[j];
+    if (IsMaximum(m, r.x[j], r.y[j], r.above, r.centre, r.below, j)) {
+      Keep(m, high, base + j, map, stack);
     }
-  }
+  });
 }
 
 #ifdef CORRIDOR_AVX2_VARIANTS
@@ -234,15 +229,13 @@ Status CannyFromGradients(const cv::Mat& dx, const cv::Mat& dy, double low, doub
 
   // Three rows of magnitudes, each with a zero before and eight after (the last pixel's
   // neighbours in a register); a row outside the image is zero. Beside them, the centre and next
-  // rows' candidates (magnitude above `low`), padded to whole words of 8 so that the scan reads 8
-  // at a time.
+  // rows' candidates (magnitude above `low`).
   const int ring_step = cols + 9;
   std::vector<uint32_t> ring(3 * static_cast<size_t>(ring_step), 0);
   uint32_t* row_mag[3] = {ring.data() + 1, ring.data() + ring_step + 1,
                           ring.data() + 2 * ring_step + 1};
-  const int words = (cols + 7) / 8;
-  std::vector<uint8_t> candidates(2 * 8 * static_cast<size_t>(words), 0);
-  uint8_t* row_candidate[2] = {candidates.data(), candidates.data() + 8 * words};
+  std::vector<uint8_t> candidates(2 * static_cast<size_t>(cols), 0);
+  uint8_t* row_candidate[2] = {candidates.data(), candidates.data() + cols};
   const uint32_t least = static_cast<uint32_t>(low_m + 1);
   // The map has a border of kNever around the image, so that hysteresis stops there.
   std::vector<uint8_t> map(static_cast<size_t>(rows + 2) * step, kNever);

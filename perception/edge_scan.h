@@ -18,25 +18,29 @@ inline uint64_t NonZeroBytes(uint64_t word) {
   return any & 0x0101010101010101ULL;
 }
 
+// Calls visit(u) for every u in [begin, end) where row[u] is not zero, in increasing order: eight
+// bytes (a word) at a time, and within a word only its non-zero bytes, without a branch per byte.
+template <typename Visit>
+inline void ForEachNonZeroByte(const uchar* row, int begin, int end, Visit&& visit) {
+  int u = begin;
+  for (; u + 8 <= end; u += 8) {
+    uint64_t word;
+    std::memcpy(&word, row + u, 8);
+    for (uint64_t set = NonZeroBytes(word); set != 0; set &= set - 1) {
+      visit(u + (__builtin_ctzll(set) >> 3));
+    }
+  }
+  for (; u < end; ++u) {
+    if (row[u] != 0) visit(u);
+  }
+}
+
 // Calls visit(u, v) for every non-zero pixel of the CV_8U map `edges`, in row-major order (as
-// cv::findNonZero lists them). Edge maps are mostly empty: eight pixels (a word) at a time, and
-// within a word only its non-zero bytes, without a branch per pixel.
+// cv::findNonZero lists them). Edge maps are mostly empty: ForEachNonZeroByte along each row.
 template <typename Visit>
 inline void ForEachEdgePixel(const cv::Mat& edges, Visit&& visit) {
-  const int width = edges.cols;
   for (int v = 0; v < edges.rows; ++v) {
-    const uchar* e = edges.ptr<uchar>(v);
-    int u = 0;
-    for (; u + 8 <= width; u += 8) {
-      uint64_t word;
-      std::memcpy(&word, e + u, 8);
-      for (uint64_t set = NonZeroBytes(word); set != 0; set &= set - 1) {
-        visit(u + (__builtin_ctzll(set) >> 3), v);
-      }
-    }
-    for (; u < width; ++u) {
-      if (e[u] != 0) visit(u, v);
-    }
+    ForEachNonZeroByte(edges.ptr<uchar>(v), 0, edges.cols, [&](int u) { visit(u, v); });
   }
 }
 

@@ -4,8 +4,9 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
-#include <cstring>
 #include <vector>
+
+#include "perception/edge_scan.h"
 
 namespace corridor {
 namespace {
@@ -51,7 +52,7 @@ FloorTexture MeasureFloorTexture(const cv::Mat& dx, const cv::Mat& dy, const Gra
   const double tolerance = options.line_tolerance_deg * M_PI / 180.0;
   const double tan_tolerance = std::tan(tolerance), sin_tolerance = std::sin(tolerance);
   const double margin = options.margin;
-  std::vector<uint8_t> strong(dx.cols + 8, 0);
+  std::vector<uint8_t> strong(dx.cols, 0);
   for (int j = 0; j < dx.rows; ++j) {
     const double v = grid.first_row + static_cast<double>(grid.scale) * j;
     if (!(v > vanishing_point.y() + margin)) continue;
@@ -62,25 +63,18 @@ FloorTexture MeasureFloorTexture(const cv::Mat& dx, const cv::Mat& dy, const Gra
     const int begin = static_cast<int>(lo), end = static_cast<int>(hi);
     const short* gx = dx.ptr<short>(j);
     const short* gy = dy.ptr<short>(j);
-    // Which pixels are strong, in one pass the compiler vectorises; then only those, eight flags
-    // (one word) at a time.
+    // Which pixels are strong, in one pass the compiler vectorises; then only those.
     for (int i = begin; i < end; ++i) {
       strong[i] = static_cast<uint8_t>(std::abs(gx[i]) + std::abs(gy[i]) >= options.strong);
     }
-    std::fill(strong.begin() + end, strong.begin() + end + 8, uint8_t{0});
-    for (int at = begin; at < end; at += 8) {
-      uint64_t word;
-      std::memcpy(&word, strong.data() + at, 8);
-      for (; word != 0; word &= word - 1) {
-        const int i = at + (__builtin_ctzll(word) >> 3);
-        ++strong_pixels;
-        const double u = static_cast<double>(grid.scale) * i;
-        odd_pixels += AlongCorridorLine(gx[i], gy[i], u, v, vanishing_point, tan_tolerance,
-                                        sin_tolerance)
-                          ? 0
-                          : 1;
-      }
-    }
+    ForEachNonZeroByte(strong.data(), begin, end, [&](int i) {
+      ++strong_pixels;
+      const double u = static_cast<double>(grid.scale) * i;
+      odd_pixels += AlongCorridorLine(gx[i], gy[i], u, v, vanishing_point, tan_tolerance,
+                                      sin_tolerance)
+                        ? 0
+                        : 1;
+    });
     out.floor_pixels += end - begin;
   }
   if (out.floor_pixels > 0) {

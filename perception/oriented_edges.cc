@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
-#include <cstring>
 #include <vector>
 
 #include <opencv2/imgproc.hpp>
@@ -123,25 +121,11 @@ OrientedEdges ComputeOrientedEdges(const cv::Mat& bgr, int top, int bottom, Imag
   out.edges = edges(band).clone();
   // Each edge pixel's orientation bit, OR-ed over its 3x3 neighbourhood.
   cv::Mat bits = cv::Mat::zeros(band.size(), CV_8U);
-  for (int r = 0; r < band.height; ++r) {
-    const uchar* e = out.edges.ptr<uchar>(r);
-    const short* gx = dx.ptr<short>(r + band.y);
-    const short* gy = dy.ptr<short>(r + band.y);
-    uchar* b = bits.ptr<uchar>(r);
-    // Edges are few: eight pixels (a word) at a time past the empty ones.
-    int u = 0;
-    for (; u + 8 <= band.width; u += 8) {
-      uint64_t word;
-      std::memcpy(&word, e + u, 8);
-      for (uint64_t set = NonZeroBytes(word); set != 0; set &= set - 1) {
-        const int at = u + (__builtin_ctzll(set) >> 3);
-        b[at] = static_cast<uchar>(1u << OrientationBin(gx[at], gy[at]));
-      }
-    }
-    for (; u < band.width; ++u) {
-      if (e[u] != 0) b[u] = static_cast<uchar>(1u << OrientationBin(gx[u], gy[u]));
-    }
-  }
+  ForEachEdgePixel(out.edges, [&](int u, int r) {
+    const int row = r + band.y;
+    bits.at<uchar>(r, u) =
+        static_cast<uchar>(1u << OrientationBin(dx.at<short>(row, u), dy.at<short>(row, u)));
+  });
   out.near.create(band.size(), CV_8U);
   OrNeighbourhoods(bits, &out.near);
   return out;
