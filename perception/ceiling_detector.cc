@@ -168,7 +168,7 @@ Status DetectCeiling(const cv::Mat& bgr, const Camera& camera, const CorridorGeo
   // Every candidate line is projected once; edges are computed only on the rows they cross.
   // Per thread, so that its half a megabyte of pixels is allocated once, not every search.
   thread_local SearchLines lines;
-  lines = SearchLines{{}, 0, std::move(lines.pixels), 0, -1};
+  lines.heights.clear();  // ProjectSearchLines sets the rest.
   ProjectSearchLines(camera, g, o, &lines);
   if (lines.bottom < lines.top) {
     estimate->reason = "no ceiling/wall junction follows the image's edges";
