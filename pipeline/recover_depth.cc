@@ -290,12 +290,17 @@ Status DepthRecoverer::Detect(const cv::Mat& image, const Camera& camera,
   if (!status.ok()) return finish(status);
   result->image = bgr;
   result->camera = camera;
-  // When the junction search and the ceiling/end-wall searches halve large images to the same
-  // width, one halving of the whole image serves both.
-  if (options_.search_max_width == options_.perception.max_work_width &&
-      WorkingScale(bgr.cols, options_.search_max_width) > 1) {
-    result->search = HalveToWidth(bgr, camera, options_.search_max_width);
-    status = DetectJunctions(bgr, result->search.bgr, options_.perception, &result->junctions);
+  // When the junction search halves the image and the ceiling/end-wall searches halve it as far or
+  // further, one halving of the whole image serves both: the searches' image is halved from it.
+  const int junction_scale = WorkingScale(bgr.cols, options_.perception.max_work_width);
+  const int search_scale = WorkingScale(bgr.cols, options_.search_max_width);
+  if (junction_scale > 1 && search_scale >= junction_scale) {
+    const WorkingImage halved = HalveToWidth(bgr, camera, options_.perception.max_work_width);
+    status = DetectJunctions(bgr, halved.bgr, options_.perception, &result->junctions);
+    result->search = search_scale == junction_scale
+                         ? halved
+                         : HalveToWidth(halved.bgr, halved.camera, options_.search_max_width);
+    result->search.scale = search_scale;
   } else {
     status = DetectJunctions(bgr, options_.perception, &result->junctions);
   }

@@ -83,7 +83,7 @@ struct RecoverDepthResult {
   }
   cv::Mat image;                  // The frame as 8-bit BGR (set by Detect, used by Reconstruct).
   Camera camera;                  // The frame's camera (set by Detect; for drawing the geometry).
-  WorkingImage search;            // The frame halved to search_max_width, when Detect halved it for the junction search too (else empty).
+  WorkingImage search;            // The frame halved to search_max_width, when Detect halved it for the junction search too (from that halving; else empty).
   cv::Mat depth;                  // CV_32F metres, camera-frame z, 0 = no estimate.
   StageTimes times;               // Per-stage wall time.
 };

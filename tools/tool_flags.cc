@@ -42,8 +42,8 @@ DEFINE_int32(search_max_width, 640,
              "(0 = full resolution)");
 DEFINE_int32(junction_max_width, 640,
              "Wider images are halved before the junction-line search until they fit, px "
-             "(0 = full resolution); when it equals --search_max_width, the two searches share one "
-             "halving");
+             "(0 = full resolution); the ceiling and end-wall searches reuse its halving of the whole "
+             "image when --search_max_width halves as far or further");
 DEFINE_double(baseboard_band_contrast, 1.45,
               "A line just below the chosen junction, parallel to it, is the junction instead (the "
               "chosen one a baseboard top) when the band between them is this unlike the floor "
