@@ -179,7 +179,7 @@ Status DetectCeiling(const cv::Mat& bgr, const Camera& camera, const CorridorGeo
 
   double best_score = 0;
   size_t best = 0;
-  LineHits best_hits[2];
+  LineHits best_hits[2], side_hits[2];
   for (size_t k = 0; k < lines.heights.size(); ++k) {
     const LineHits hits[2] = {OrientedLineHits(lines.Line(k, 0), lines.samples, edges),
                               OrientedLineHits(lines.Line(k, 1), lines.samples, edges)};
@@ -189,6 +189,7 @@ Status DetectCeiling(const cv::Mat& bgr, const Camera& camera, const CorridorGeo
       if (support[side] > estimate->side_support[side]) {
         estimate->side_support[side] = support[side];
         estimate->side_height[side] = lines.heights[k];
+        side_hits[side] = hits[side];
       }
     }
     const double score = support[0] + support[1];
@@ -205,6 +206,9 @@ Status DetectCeiling(const cv::Mat& bgr, const Camera& camera, const CorridorGeo
       1, static_cast<int>(std::lround(o.min_counted_fraction * lines.samples)));
   const double best_left = best_hits[0].Fraction(counted);
   const double best_right = best_hits[1].Fraction(counted);
+  for (int side = 0; side < 2; ++side) {
+    estimate->side_visible_support[side] = side_hits[side].Fraction(counted);
+  }
   estimate->left_support = best_left;
   estimate->right_support = best_right;
   if (std::max(best_left, best_right) < o.min_support) {

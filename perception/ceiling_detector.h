@@ -35,6 +35,7 @@ struct CeilingEstimate {
   // its support. A wrong wall distance scales its side's height, so the two then disagree.
   double side_height[2] = {0, 0};   // Left, right: H_c, m (0 when the side has no line).
   double side_support[2] = {0, 0};  // Left, right: the support of that line (of at least half the samples, as the search counts).
+  double side_visible_support[2] = {0, 0};  // Left, right: the same line's support on its samples in view (at least min_counted_fraction counted, as the chosen lines are judged).
   std::string reason;        // Why nothing was found.
 };
 

@@ -8,8 +8,9 @@ bool InnerLineCheckOptions::Check(std::string* why) const {
   std::string reason;
   if (!(min_disagreement > 0 && std::isfinite(min_disagreement))) {
     reason = "min_disagreement must be positive";
-  } else if (!(min_support > 0 && min_support <= 1)) {
-    reason = "min_support must be in (0, 1]";
+  } else if (!(min_support > 0 && min_support <= 1) ||
+             !(strong_support > 0 && strong_support <= 1)) {
+    reason = "min_support and strong_support must be in (0, 1]";
   } else if (!(min_above_camera > 0 && std::isfinite(min_above_camera))) {
     reason = "min_above_camera must be positive";
   }
@@ -21,7 +22,7 @@ bool InnerLineCheckOptions::Check(std::string* why) const {
 InnerLineCheck CheckInnerLine(const cv::Mat& bgr, const Camera& camera,
                               const CeilingDetectorOptions& ceiling,
                               const InnerLineCheckOptions& options, CorridorGeometry* geometry,
-                              ImageEdges* edges) {
+                              ImageEdges* edges, std::array<bool, 2> has_lower) {
   InnerLineCheck check;
   const double h = geometry->camera_height;
   CeilingDetectorOptions wide = ceiling;
@@ -34,13 +35,19 @@ InnerLineCheck CheckInnerLine(const cv::Mat& bgr, const Camera& camera,
     check.side_height[s] = sides.side_height[s];
     check.side_support[s] = sides.side_support[s];
   }
-  if (sides.side_support[0] < options.min_support || sides.side_support[1] < options.min_support) {
-    return check;
-  }
   // Each side's ceiling above the camera: proportional to its wall's distance.
   const double above[2] = {sides.side_height[0] - h, sides.side_height[1] - h};
   if (!(above[0] > 0) || !(above[1] > 0)) return check;
   const int inner = above[0] < above[1] ? 0 : 1;
+  // Both sides on at least half their samples; or, where the trusted side's junction shows only
+  // from a few metres on, that side on its samples in view and the side to move strong (a wall put
+  // too near sees its ceiling junction, scaled down, over most of the samples).
+  const bool both = sides.side_support[0] >= options.min_support &&
+                    sides.side_support[1] >= options.min_support;
+  const bool narrow_view = sides.side_visible_support[1 - inner] >= options.min_support &&
+                           sides.side_support[inner] >= options.strong_support &&
+                           !has_lower[1 - inner];
+  if (!both && !narrow_view) return check;
   const double factor = above[1 - inner] / above[inner];
   const double trusted = sides.side_height[1 - inner];
   if (!(factor > 1 + options.min_disagreement) || trusted < ceiling.min_height ||

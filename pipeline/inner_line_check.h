@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <string>
 
 #include <opencv2/core.hpp>
@@ -18,7 +19,8 @@ namespace corridor {
 // heights, to where its ceiling junction meets the other side's ceiling.
 struct InnerLineCheckOptions {
   double min_disagreement = 0.15;  // Least relative difference of the two sides' ceiling heights that moves a wall.
-  double min_support = 0.35;       // Least fraction of each side's ceiling junction on edges (the ceiling search's own minimum).
+  double min_support = 0.35;       // Least fraction of each side's ceiling junction on edges (the ceiling search's own minimum), counted over at least half its samples.
+  double strong_support = 0.45;    // When the trusted side reaches min_support only on its samples in view (a narrow vertical view shows its junction from a few metres on), the side to move needs this much, of at least half its samples.
   double min_above_camera = 0.2;   // The wide search: ceilings from this far above the camera, m, up to the ceiling search's max_height.
 
   bool Check(std::string* why) const;
@@ -35,10 +37,15 @@ struct InnerLineCheck {
 // Runs the check on the search image (`bgr` with `camera`, as the ceiling search sees them);
 // `ceiling` are the ceiling search's options (its min_height..max_height bound the ceiling the
 // trusted side may give). Updates *geometry (width and offset) when a wall moves. `edges`: the
-// frame's edges of the search image (see DetectCeiling), or null.
+// frame's edges of the search image (see DetectCeiling), or null. `has_lower` (left, right): the
+// sides whose junction has a lower parallel line beside it (JunctionPair::has_left_lower): a
+// baseboard's top may have been taken for it, its wall then too far and its ceiling too high.
+// Where the trusted side reaches min_support only on its samples in view
+// (InnerLineCheckOptions::strong_support), such a side is not trusted.
 InnerLineCheck CheckInnerLine(const cv::Mat& bgr, const Camera& camera,
                               const CeilingDetectorOptions& ceiling,
                               const InnerLineCheckOptions& options, CorridorGeometry* geometry,
-                              ImageEdges* edges = nullptr);
+                              ImageEdges* edges = nullptr,
+                              std::array<bool, 2> has_lower = {false, false});
 
 }  // namespace corridor

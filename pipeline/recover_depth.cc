@@ -485,13 +485,14 @@ Status DepthRecoverer::MoveInnerWall(const WorkingImage& search, ImageEdges* edg
   const CeilingEstimate& found = result->ceiling;
   const double disagreement = CeilingDisagreement(found, geometry->camera_height);
   if ((disagreement >= 0 && disagreement <= std::log(1 + options_.inner_line.min_disagreement)) ||
-      std::max(found.side_support[0], found.side_support[1]) < options_.inner_line.min_support) {
+      std::max(found.side_visible_support[0], found.side_visible_support[1]) <
+          options_.inner_line.min_support) {
     return Status::Ok();
   }
   CorridorGeometry moved = *geometry;
   const InnerLineCheck check =
       CheckInnerLine(search.bgr, search.camera, options_.ceiling, options_.inner_line, &moved,
-                     edges);
+                     edges, {result->junctions.has_left_lower, result->junctions.has_right_lower});
   if (!check.moved || !CheckPlausible(moved, options_).ok()) return Status::Ok();
   // In a sequence the previous frame's width must agree better with the moved wall than with the
   // line it replaces (a misjudged side would otherwise carry on through the width hold).

@@ -138,6 +138,16 @@ TEST(CeilingDetectorTest, FindsAHighCeilingSeenOnlyFromAFewMetres) {
     ASSERT_TRUE(estimate.found) << preset.name << ": " << estimate.reason;
     EXPECT_NEAR(estimate.height, options.ceiling_height, 0.03 * options.ceiling_height)
         << preset.name;
+    // Each side's own line: judged on its samples in view, strong enough to be trusted, and never
+    // weaker than counted over half of all samples. (Its height, chosen on half of all samples,
+    // leans toward lower lines, which come into view nearer: within 5%, not 3%.)
+    for (int side = 0; side < 2; ++side) {
+      EXPECT_NEAR(estimate.side_height[side], options.ceiling_height,
+                  0.05 * options.ceiling_height) << preset.name << " " << side;
+      EXPECT_GE(estimate.side_visible_support[side], estimate.side_support[side]);
+      EXPECT_GE(estimate.side_visible_support[side], CeilingDetectorOptions().min_support)
+          << preset.name << " " << side;
+    }
     ++checked;
   }
   EXPECT_EQ(checked, 6);

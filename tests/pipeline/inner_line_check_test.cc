@@ -47,6 +47,40 @@ TEST(InnerLineCheckTest, AWallPutTooNearIsMovedBackOut) {
   }
 }
 
+// A 16:9 view (the search image of a 1280x720 camera, 80 degrees across): the ceiling junctions
+// of a 3.2 m ceiling show only from a few metres on, so the trusted side's line has fewer than
+// half of its samples in view. Its support is judged on the samples in view, as the ceiling
+// search judges its chosen lines; the wall put too near is still moved back out.
+TEST(InnerLineCheckTest, ANarrowVerticalViewStillMovesTheWall) {
+  const Camera camera = Camera::FromHorizontalFov(640, 360, 80.0 * M_PI / 180, 0.66);
+  const synth::Frame frame = testing_util::RenderCorridorFrame(
+      camera, 1.6, 3.2, 3, synth::CameraPose{0.03, 0.02, 0.05, 0.66, 3.0}, 0.0);
+  ASSERT_FALSE(frame.bgr.empty());
+  const CorridorGeometry& truth = frame.truth;
+  for (const int side : {0, 1}) {
+    double distance[2] = {truth.LeftDistance(), truth.RightDistance()};
+    distance[side] *= 0.5;
+    CorridorGeometry g = truth;
+    g.SetWallDistances(distance[0], distance[1]);
+    // A trusted side with a lower parallel line beside it (a baseboard's top may have been
+    // taken) is not trusted this weak.
+    CorridorGeometry unmoved = g;
+    std::array<bool, 2> has_lower = {false, false};
+    has_lower[1 - side] = true;
+    EXPECT_FALSE(CheckInnerLine(frame.bgr, camera, CeilingDetectorOptions(),
+                                InnerLineCheckOptions(), &unmoved, nullptr, has_lower)
+                     .moved);
+    const InnerLineCheck check =
+        CheckInnerLine(frame.bgr, camera, CeilingDetectorOptions(), InnerLineCheckOptions(), &g);
+    // The premise: counted over half the samples, the trusted side is below the check's 0.35.
+    EXPECT_LT(check.side_support[1 - side], InnerLineCheckOptions().min_support) << side;
+    ASSERT_TRUE(check.moved) << side;
+    EXPECT_EQ(check.side, side);
+    EXPECT_NEAR(g.width, truth.width, 0.03 * truth.width) << side;
+    EXPECT_NEAR(g.offset, truth.offset, 0.05) << side;
+  }
+}
+
 // The true geometry: both ceiling junctions agree, nothing moves.
 TEST(InnerLineCheckTest, TheTrueGeometryStays) {
   const Camera camera = synth::PaperCamera(0.66);
@@ -134,6 +168,10 @@ TEST(InnerLineCheckTest, BadOptionsAreRejected) {
   options.min_above_camera = -1;
   EXPECT_FALSE(options.Check(&why));
   EXPECT_NE(why.find("min_above_camera"), std::string::npos) << why;
+  options = InnerLineCheckOptions();
+  options.strong_support = 0;
+  EXPECT_FALSE(options.Check(&why));
+  EXPECT_NE(why.find("strong_support"), std::string::npos) << why;
   RecoverDepthOptions recover;
   recover.inner_line.min_support = 2;
   EXPECT_FALSE(recover.Check(&why));
