@@ -22,33 +22,39 @@ namespace {
 constexpr int kMinImageSide = 24;  // Smaller images cannot show a corridor.
 constexpr long kMinFloorPixels = 200;  // Fewer floor pixels (working resolution) are too few to judge its texture.
 
+// The points of `from` for which keep(p) holds, in order, into *to. Every point is written and
+// the count advanced only for the kept ones: no branch on where the points lie, which edge maps
+// make unpredictable.
+template <typename Keep>
+void KeepWhere(const std::vector<Eigen::Vector2d>& from, Keep keep,
+               std::vector<Eigen::Vector2d>* to) {
+  to->resize(from.size());
+  size_t kept = 0;
+  for (const auto& p : from) {
+    (*to)[kept] = p;
+    kept += static_cast<size_t>(keep(p));
+  }
+  to->resize(kept);
+}
+
 // Edge pixels of the ROI (full-image coordinates) on the floor side of the vanishing point (left
 // or right of it, and below it), in the edge map's order.
 std::vector<Eigen::Vector2d> FloorSidePixels(const std::vector<Eigen::Vector2d>& edges,
                                              const Eigen::Vector2d& vp, bool left) {
-  // Every pixel written, the count advanced only for the kept ones: no branch on where the
-  // pixels lie, which edge maps make unpredictable.
-  std::vector<Eigen::Vector2d> side(edges.size());
-  size_t kept = 0;
-  for (const auto& p : edges) {
-    side[kept] = p;
+  std::vector<Eigen::Vector2d> side;
+  KeepWhere(edges, [&](const Eigen::Vector2d& p) {
     const bool beyond = left ? p.x() > vp.x() : p.x() < vp.x();
-    kept += static_cast<size_t>(!beyond & !(p.y() < vp.y()));
-  }
-  side.resize(kept);
+    return !beyond & !(p.y() < vp.y());
+  }, &side);
   return side;
 }
 
 // The pixels of `side` within `distance` of the line, in order.
 void SupportPixels(const std::vector<Eigen::Vector2d>& side, const Eigen::Vector3d& line,
                    double distance, std::vector<Eigen::Vector2d>* support) {
-  support->resize(side.size());  // As FloorSidePixels: written always, counted when kept.
-  size_t kept = 0;
-  for (const auto& p : side) {
-    (*support)[kept] = p;
-    kept += static_cast<size_t>(!(std::abs(line.dot(p.homogeneous())) > distance));
-  }
-  support->resize(kept);
+  KeepWhere(side, [&](const Eigen::Vector2d& p) {
+    return !(std::abs(line.dot(p.homogeneous())) > distance);
+  }, support);
 }
 
 // The final JunctionLine: refit on nearby edge pixels, extent and confidence.
