@@ -2,6 +2,7 @@
 
 // Row kernels of the binomial filters [1 2 1] / 4 and [1 4 6 4 1] / 16 on 8-bit pixels with C
 // interleaved channels, in 16-bit integers: the sums down a column of rows, then along the row.
+// Also any symmetric 5-tap kernel in 1/256 (Kernel5), as cv::GaussianBlur's fixed point has it.
 // Shared by PyrDown (working_image.cc) and BinomialBlur (binomial_blur.cc); always inlined and
 // without a target, so that each caller's AVX2 variant vectorises them with AVX2.
 
@@ -57,6 +58,43 @@ CORRIDOR_ALWAYS_INLINE inline void RowSums5(const uint16_t* v, int n, uint8_t* _
         static_cast<uint16_t>(v[i - 2 * C] + v[i + 2 * C] + 4 * (v[i - C] + v[i + C]) + 6 * v[i] +
                               128) >>
         8);
+  }
+}
+
+// A symmetric 5-tap kernel in 1/256: the centre's weight, its neighbours', and the outer pair's;
+// centre + 2 near + 2 far = 256.
+struct Kernel5 {
+  uint16_t centre, near, far;
+};
+
+// v[i] = far (r0 + r4) + near (r1 + r3) + centre r2 (at most 256 * 255).
+CORRIDOR_ALWAYS_INLINE inline void WeightedColumnSums5(const uint8_t* r0, const uint8_t* r1,
+                                                       const uint8_t* r2, const uint8_t* r3,
+                                                       const uint8_t* r4, int n, Kernel5 k,
+                                                       uint16_t* __restrict v) {
+  for (int i = 0; i < n; ++i) {
+    v[i] = static_cast<uint16_t>(k.far * (r0[i] + r4[i]) + k.near * (r1[i] + r3[i]) +
+                                 k.centre * r2[i]);
+  }
+}
+
+// h[i] = the same weights along the row, (sum + 2^15) / 2^16 rounded half up. In 16 bits (twice
+// the lanes of 32): the sums' high bytes and low bytes are weighed apart, H and L (each at most
+// 256 * 255), and (256 H + L + 2^15) >> 16 = (H + (L >> 8) + 128) >> 8, whose sum stays below
+// 2^16 as H + L / 256 is the blurred value times 256.
+template <int C>
+CORRIDOR_ALWAYS_INLINE inline void WeightedRowSums5(const uint16_t* v, int n, Kernel5 k,
+                                                    uint8_t* __restrict h) {
+  const uint16_t far = k.far, near = k.near, centre = k.centre;
+  const auto hi = [](uint16_t x) { return static_cast<uint16_t>(x >> 8); };
+  const auto lo = [](uint16_t x) { return static_cast<uint16_t>(x & 255); };
+  for (int i = 0; i < n; ++i) {
+    const uint16_t a = v[i - 2 * C], b = v[i - C], c = v[i], d = v[i + C], e = v[i + 2 * C];
+    const uint16_t high = static_cast<uint16_t>(far * (hi(a) + hi(e)) + near * (hi(b) + hi(d)) +
+                                                centre * hi(c));
+    const uint16_t low = static_cast<uint16_t>(far * (lo(a) + lo(e)) + near * (lo(b) + lo(d)) +
+                                               centre * lo(c));
+    h[i] = static_cast<uint8_t>(static_cast<uint16_t>(high + (low >> 8) + 128) >> 8);
   }
 }
 

@@ -7,6 +7,7 @@
 #include <Eigen/Geometry>
 #include <opencv2/imgproc.hpp>
 
+#include "perception/binomial_blur.h"
 #include "perception/canny_edges.h"
 #include "perception/color_gradient.h"
 #include "perception/oriented_hough.h"
@@ -47,7 +48,7 @@ EdgeSegments DetectSegments(const cv::Mat& image, int roi_top, const SegmentOpti
   const cv::Mat roi = image.rowRange(roi_top, image.rows);
   cv::Mat smooth;
   if (options.blur_sigma > 0) {
-    cv::GaussianBlur(roi, smooth, cv::Size(0, 0), options.blur_sigma);
+    GaussianBlurView(roi, options.blur_sigma, &smooth);
   } else {
     smooth = roi;
   }

@@ -119,8 +119,45 @@ class Accumulator {
 struct HoughScratch {
   Accumulator accumulator;
   cv::Mat state, bins;          // PixelState and gradient bin of every pixel.
-  std::vector<cv::Point> pool;   // Edge pixels not drawn yet.
+  std::vector<cv::Point> pool;   // Edge pixels in raster order.
+  std::vector<uint64_t> keys, sorted;  // DrawOrder's keys and radix buffer.
+  std::vector<cv::Point> drawn;  // The edge pixels in the order they are drawn.
 };
+
+// A pseudo-random 16-bit rank of pixel (u, v): a multiply-xorshift hash of its coordinates.
+uint32_t DrawRank(int u, int v) {
+  uint32_t h = static_cast<uint32_t>(u) * 0x9E3779B1u ^ static_cast<uint32_t>(v) * 0x85EBCA77u;
+  h ^= h >> 15;
+  h *= 0x2C1B3C6Du;
+  h ^= h >> 12;
+  return h >> 16;
+}
+
+// Puts the pixels in the order they are drawn: by DrawRank, ties in raster order (a stable radix
+// sort of (rank, index in the raster-ordered pool) keys, low byte of the rank, then high byte).
+// Each pixel's place among the others depends on its coordinates alone, so one edge pixel more or
+// less moves no other pixel's turn: the segments change only around it. (Drawn from the pool by a
+// random number generator, as OpenCV draws them, every later pixel gets another turn when one
+// pixel is added: a blur one grey level off at a sixth of the pixels changed the width by more
+// than 3% on 7% of the evaluation frames, against 2.5% in this order.)
+void DrawOrder(const std::vector<cv::Point>& raster, std::vector<uint64_t>* keys,
+               std::vector<uint64_t>* buffer, std::vector<cv::Point>* drawn) {
+  const size_t n = raster.size();
+  keys->resize(n);
+  buffer->resize(n);
+  for (size_t i = 0; i < n; ++i) {
+    (*keys)[i] = uint64_t{DrawRank(raster[i].x, raster[i].y)} << 32 | i;
+  }
+  for (int shift = 32; shift < 48; shift += 8) {
+    size_t start[257] = {};
+    for (const uint64_t k : *keys) ++start[((k >> shift) & 255) + 1];
+    for (int b = 0; b < 256; ++b) start[b + 1] += start[b];
+    for (const uint64_t k : *keys) (*buffer)[start[(k >> shift) & 255]++] = k;
+    keys->swap(*buffer);
+  }
+  drawn->resize(n);
+  for (size_t i = 0; i < n; ++i) (*drawn)[i] = raster[(*keys)[i] & 0xffffffffu];
+}
 
 // The normal's direction of the line through an edge pixel, from its gradient: a bin in [0, 180).
 int GradientBin(short gx, short gy) {
@@ -183,14 +220,11 @@ void OrientedHoughSegments(const cv::Mat& edges, const cv::Mat& dx, const cv::Ma
     bins.at<uchar>(v, u) = static_cast<uchar>(GradientBin(dx.at<short>(v, u), dy.at<short>(v, u)));
     pool.emplace_back(u, v);
   });
-  cv::RNG rng(0xffffffffffffffffULL);  // Fixed: the same segments for the same image.
+  DrawOrder(pool, &scratch.keys, &scratch.sorted, &scratch.drawn);
   const int max_gap =
       options.max_gap > 0 ? static_cast<int>(std::min(options.max_gap, 1.0 * (width + height)))
                           : 0;
-  for (int remaining = static_cast<int>(pool.size()); remaining > 0; --remaining) {
-    const int pick = rng.uniform(0, remaining);
-    const cv::Point p = pool[pick];
-    pool[pick] = pool[remaining - 1];
+  for (const cv::Point& p : scratch.drawn) {
     if (state.at<uchar>(p.y, p.x) != kWaiting) continue;  // Removed with a line meanwhile.
     state.at<uchar>(p.y, p.x) = kVoted;
     int angle = 0;

@@ -14,13 +14,15 @@ struct OrientedHoughOptions {
 };
 
 // The progressive probabilistic Hough transform of Matas, Galambos and Kittler (2000), as
-// cv::HoughLinesP runs it (1 px, 1 degree; edge pixels drawn at random, fixed seed; a line whose
+// cv::HoughLinesP runs it (1 px, 1 degree; edge pixels drawn in random order; a line whose
 // bin reaches the threshold is followed along the edge map in both directions, bridging gaps up
 // to max_gap, and its pixels are removed), except that each edge pixel votes only for the line
 // normals within angle_window_deg of its own gradient direction instead of for all 180: about a
 // tenth of the votes, and pixels of other lines and of texture no longer pile onto a line's bin.
 // One more difference from OpenCV's loop: a pixel that was never drawn is not un-voted when the
-// line through it is removed (OpenCV un-votes it, which can leave negative bins).
+// line through it is removed (OpenCV un-votes it, which can leave negative bins). And the order
+// is fixed by each pixel's coordinates (a hash), not by a random number generator drawing from the
+// pool: one edge pixel more or less changes the segments around it only, not the whole set.
 // `edges`: CV_8U edge map (non-zero = edge); `dx`, `dy`: CV_16S gradients of the same size (the
 // Canny input). Segments are (u0, v0, u1, v1) in the edge map's pixels.
 void OrientedHoughSegments(const cv::Mat& edges, const cv::Mat& dx, const cv::Mat& dy,

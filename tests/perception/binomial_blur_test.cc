@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 #include <opencv2/core.hpp>
+#include <opencv2/imgproc.hpp>
 
 namespace corridor {
 namespace {
@@ -91,6 +92,71 @@ TEST(BinomialBlurTest, RejectsBadImagesTapsAndRows) {
   EXPECT_FALSE(BinomialBlur(image, 5, 5, 3, &out).ok());
   const Status status = BinomialBlur(image, 0, 10, 4, &out);
   EXPECT_NE(status.message().find("taps"), std::string::npos) << status.ToString();
+}
+
+
+// GaussianBlurView against cv::GaussianBlur itself, the independent path it must equal bit for
+// bit. OpenCV blurs a whole 8-bit image in fixed point, and a band of rows as those rows of the
+// whole image blurred; column crops and wider kernels are OpenCV's own call on the view. Every
+// channel count, and sigmas on both sides of the five-tap limit.
+TEST(GaussianBlurViewTest, EqualsOpenCvsGaussianBlurBitForBit) {
+  cv::RNG rng(11);
+  int compared = 0, fast = 0;
+  for (int channels = 1; channels <= 4; ++channels) {
+    for (const cv::Size size : {cv::Size(67, 41), cv::Size(1, 7), cv::Size(7, 1), cv::Size(2, 3),
+                                cv::Size(640, 12)}) {
+      cv::Mat image(size, CV_8UC(channels));
+      rng.fill(image, cv::RNG::UNIFORM, 0, 256);
+      for (const double sigma : {0.3, 0.5, 0.7, 0.8, 0.9, 1.2, 2.0}) {
+        cv::Mat whole;
+        cv::GaussianBlur(image, whole, cv::Size(0, 0), sigma);
+        const bool five_taps = sigma < 1;  // sigma 1 has a weight three pixels out.
+        const int band = std::max(1, size.height / 3);
+        for (const cv::Range rows : {cv::Range::all(), cv::Range(band, size.height),
+                                     cv::Range(0, band), cv::Range(band / 2, band)}) {
+          if (rows.start >= rows.end && rows != cv::Range::all()) continue;
+          const cv::Mat view = image.rowRange(rows);
+          cv::Mat expected = whole.rowRange(rows), blurred;
+          if (!five_taps) cv::GaussianBlur(view, expected, cv::Size(0, 0), sigma);
+          GaussianBlurView(view, sigma, &blurred);
+          ASSERT_EQ(blurred.size(), expected.size());
+          ASSERT_EQ(blurred.type(), expected.type());
+          EXPECT_EQ(cv::norm(blurred, expected, cv::NORM_INF), 0.0)
+              << channels << " channels, " << size << ", sigma " << sigma << ", rows "
+              << rows.start << "-" << rows.end;
+          ++compared;
+          fast += five_taps;
+        }
+        // A column crop: OpenCV's call on the view.
+        const cv::Mat crop = image.colRange(0, std::max(1, size.width / 2));
+        cv::Mat expected, blurred;
+        cv::GaussianBlur(crop, expected, cv::Size(0, 0), sigma);
+        GaussianBlurView(crop, sigma, &blurred);
+        EXPECT_EQ(cv::norm(blurred, expected, cv::NORM_INF), 0.0)
+            << channels << " channels, " << size << ", sigma " << sigma << ", column crop";
+      }
+    }
+  }
+  EXPECT_GT(compared, 4 * 5 * 7 * 2);
+  EXPECT_GT(fast, compared / 2);
+}
+
+// The junction search's sigma, 0.8, has OpenCV's kernel [6 58 128 58 6] / 256 (read here off an
+// impulse OpenCV blurs). A band blurred into its own pixels is blurred from the original.
+TEST(GaussianBlurViewTest, BlursABandIntoItsOwnPixelsFromTheOriginal) {
+  cv::Mat impulse = cv::Mat::zeros(1, 9, CV_8U), spread;
+  impulse.at<uchar>(0, 4) = 255;
+  cv::GaussianBlur(impulse, spread, cv::Size(0, 0), 0.8);
+  EXPECT_EQ(spread.at<uchar>(0, 2), 6);
+  EXPECT_EQ(spread.at<uchar>(0, 3), 58);
+  EXPECT_EQ(spread.at<uchar>(0, 1), 0);
+  cv::Mat image(30, 50, CV_8UC3);
+  cv::RNG(12).fill(image, cv::RNG::UNIFORM, 0, 256);
+  cv::Mat whole;
+  cv::GaussianBlur(image, whole, cv::Size(0, 0), 0.8);
+  cv::Mat view = image.rowRange(10, 30);
+  GaussianBlurView(view, 0.8, &view);
+  EXPECT_EQ(cv::norm(view, whole.rowRange(10, 30), cv::NORM_INF), 0.0);
 }
 
 }  // namespace

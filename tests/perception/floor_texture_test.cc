@@ -156,16 +156,19 @@ TEST(FloorTextureTest, NothingIsCountedForWrongMaps) {
 }
 
 // Outdoor scenes where two blob outlines meet like a corridor's junctions (found with the check
-// off), and the check says why they are not one.
+// off), and the check says why they are not one. Every such scene among the first 120 seeds (which
+// ones they are depends on the Hough's draws; at least three of them must be).
 TEST(FloorTextureTest, AnOutdoorSceneWhoseBlobsMeetLikeJunctionsIsNoCorridor) {
-  for (const uint64_t seed : {3, 85, 127}) {
+  int pairs = 0;
+  for (uint64_t seed = 0; seed < 120; ++seed) {
     SCOPED_TRACE(seed);
     const cv::Mat image = testing_util::OutdoorScene(seed);
     JunctionDetectorOptions off;
     off.max_floor_texture = 0;
     JunctionPair pair;
     ASSERT_TRUE(DetectJunctions(image, off, &pair).ok());
-    ASSERT_TRUE(pair.status.ok()) << "premise: without the check a pair is found";
+    if (!pair.status.ok()) continue;  // No pair even without the check.
+    ++pairs;
     ASSERT_TRUE(DetectJunctions(image, JunctionDetectorOptions(), &pair).ok());
     EXPECT_EQ(pair.status.code(), StatusCode::kNoCorridorFound);
     EXPECT_GT(pair.floor_texture, JunctionDetectorOptions().max_floor_texture);
@@ -173,6 +176,7 @@ TEST(FloorTextureTest, AnOutdoorSceneWhoseBlobsMeetLikeJunctionsIsNoCorridor) {
               std::string::npos)
         << pair.status.ToString();
   }
+  EXPECT_GE(pairs, 3) << "premise: without the check, blobs meet like junctions in some scenes";
 }
 
 TEST(FloorTextureTest, OptionsAreChecked) {

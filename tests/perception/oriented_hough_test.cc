@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -134,6 +135,49 @@ TEST(OrientedHoughTest, TheSameImageGivesTheSameSegmentsWhateverCameBefore) {
     ASSERT_EQ(again.size(), first.size());
     for (size_t i = 0; i < first.size(); ++i) EXPECT_EQ(again[i], first[i]) << i;
   }
+}
+
+// The draw order is fixed by each pixel's coordinates: one edge pixel more, away from every line,
+// leaves every segment as it was. (Drawn from a pool by a random number generator, every later
+// pixel's turn would change, and with it segments all over a cluttered image.)
+TEST(OrientedHoughTest, OneMoreEdgePixelLeavesTheOtherSegmentsAsTheyWere) {
+  // Clutter: forty short dark strokes at random angles over the quadrilateral.
+  cv::Mat grey = QuadImage();
+  cv::RNG rng(5);
+  for (int i = 0; i < 40; ++i) {
+    const cv::Point a(rng.uniform(0, 320), rng.uniform(0, 240));
+    const double angle = rng.uniform(0.0, M_PI);
+    const int length = rng.uniform(15, 60);
+    const cv::Point b(a.x + static_cast<int>(length * std::cos(angle)),
+                      a.y + static_cast<int>(length * std::sin(angle)));
+    cv::line(grey, a, b, cv::Scalar(rng.uniform(0, 120)), 2);
+  }
+  const EdgeInput in = EdgesOf(grey);
+  OrientedHoughOptions options;
+  options.threshold = 15;
+  std::vector<cv::Vec4i> before;
+  OrientedHoughSegments(in.edges, in.dx, in.dy, options, &before);
+  ASSERT_GT(before.size(), 20u) << "premise: a cluttered image";
+  const auto sorted = [](std::vector<cv::Vec4i> s) {
+    std::sort(s.begin(), s.end(), [](const cv::Vec4i& a, const cv::Vec4i& b) {
+      return std::lexicographical_compare(&a[0], &a[0] + 4, &b[0], &b[0] + 4);
+    });
+    return s;
+  };
+  int tried = 0;
+  for (int k = 0; k < 200 && tried < 5; ++k) {
+    const cv::Point p(rng.uniform(2, 318), rng.uniform(2, 238));
+    if (cv::countNonZero(in.edges(cv::Rect(p.x - 2, p.y - 2, 5, 5))) > 0) continue;  // Near one.
+    ++tried;
+    EdgeInput more{in.edges.clone(), in.dx.clone(), in.dy.clone()};
+    more.edges.at<uchar>(p) = 255;
+    more.dx.at<short>(p) = 200;  // A vertical edge's gradient.
+    more.dy.at<short>(p) = 0;
+    std::vector<cv::Vec4i> after;
+    OrientedHoughSegments(more.edges, more.dx, more.dy, options, &after);
+    EXPECT_EQ(sorted(after), sorted(before)) << "one more edge pixel at " << p;
+  }
+  EXPECT_EQ(tried, 5);
 }
 
 TEST(OrientedHoughTest, InputsThatDoNotMatchGiveNoSegments) {
