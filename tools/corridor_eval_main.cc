@@ -108,6 +108,8 @@ void PrintSummary(const EvalReport& r) {
   std::printf("%s: %d of %d frames ok; width error %s%%", r.ConfigName().c_str(),
               a.num_frames - a.num_failed, a.num_frames,
               FormatNumber(100 * a.width.rel_error, 3).c_str());
+  std::printf(" (%d frames more than %s%% off)", a.width.num_gross,
+              FormatNumber(100 * kGrossWidthError, 0).c_str());
   for (size_t c = 0; c < r.caps.size(); ++c) {
     const DepthMetrics& m = a.depth[c];
     std::printf("; %s: AbsRel %s RMSE %s coverage %s", CapLabel(r.caps[c]).c_str(),

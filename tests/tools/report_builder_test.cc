@@ -23,6 +23,7 @@ TEST(ReportBuilder, ScenesMatchHandComputedValues) {
   EXPECT_NEAR(e.width.truth, 2.1, 1e-12);
   EXPECT_NEAR(e.width.rel_error, 0.05 / 2.1, 1e-12);
   EXPECT_NEAR(e.width.mean_frame_rel_error, (0.1 / 2.1 + 0.2 / 2.1) / 2, 1e-12);
+  EXPECT_EQ(e.width.num_gross, 1);  // 9.5% off; 4.8% is not gross.
   ASSERT_EQ(e.depth.size(), 2u);
   EXPECT_NEAR(e.depth[0].abs_rel, 0.15, 1e-12);
   EXPECT_NEAR(e.depth[0].rmse, 0.3, 1e-12);

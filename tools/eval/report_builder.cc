@@ -60,6 +60,7 @@ GroupSummary Summarize(const std::string& name, const std::vector<FrameRecord>& 
     if (f.has_truth) true_width.push_back(f.truth.width);
     if (f.has_estimate && f.has_truth) {
       frame_width_error.push_back(RelativeError(f.estimate.width, f.truth.width));
+      if (frame_width_error.back() > kGrossWidthError) ++g.width.num_gross;
       yaw.push_back(std::abs(f.estimate.yaw - f.truth.yaw));
       pitch.push_back(std::abs(f.estimate.pitch - f.truth.pitch));
       offset.push_back(std::abs(f.estimate.offset - f.truth.offset));

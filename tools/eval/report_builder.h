@@ -22,7 +22,11 @@ struct WidthSummary {
   double mean_frame_rel_error = kUnknown;  // Mean of |w_est - w_true| / w_true over frames.
   int num_estimated = 0;                   // Frames with an estimate.
   int num_truth = 0;                       // Frames with a true width.
+  int num_gross = 0;                       // Frames whose width is more than kGrossWidthError off: the wrong line taken, not noise.
 };
+
+// A frame's width this far off (relative) counts as a gross error (WidthSummary::num_gross).
+inline constexpr double kGrossWidthError = 0.05;
 
 // Mean absolute errors of the estimated pose against truth.yaml.
 struct PoseErrorSummary {

@@ -91,6 +91,7 @@ std::string Group(const GroupSummary& g, const std::vector<double>& caps, bool i
   width.Number("rel_error", g.width.rel_error);
   width.Number("mean_frame_rel_error", g.width.mean_frame_rel_error);
   width.Int("num_estimated", g.width.num_estimated).Int("num_truth", g.width.num_truth);
+  width.Int("num_gross", g.width.num_gross);
   o.Add("width", width.Text());
   JsonObject pose;
   pose.Number("yaw_abs_error_rad", g.pose.yaw).Number("pitch_abs_error_rad", g.pose.pitch);

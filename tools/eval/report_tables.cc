@@ -60,12 +60,13 @@ TextTable WidthTable(const EvalReport& r) {
               "Groundtruth(m)",
               "relative error %",
               "mean per-frame error %",
-              "frames (estimated / with truth)"};
+              "frames (estimated / with truth)",
+              "frames > " + FormatNumber(100 * kGrossWidthError, 0) + "% off"};
   for (const GroupSummary* g : Rows(r)) {
     AddRow(&t,
            {g->name, FormatNumber(g->width.estimated, 2), FormatNumber(g->width.truth, 2),
             Percent(g->width.rel_error, 4), Percent(g->width.mean_frame_rel_error, 4),
-            Int(g->width.num_estimated) + " / " + Int(g->width.num_truth)},
+            Int(g->width.num_estimated) + " / " + Int(g->width.num_truth), Int(g->width.num_gross)},
            IsSummary(r, g));
   }
   t.note =
