@@ -128,17 +128,19 @@ void AddFallbackNote(const std::string& how, RecoverDepthResult* result) {
   result->fallback += (result->fallback.empty() ? "" : "; ") + how;
 }
 
-// In a sequence, a width much narrower than the previous frame's means that one junction is wrong
-// (a box edge or a grout line taken for it): the wall that moved less since the previous frame
-// stays, and the other one is put at the previous width from it.
+// In a sequence, a width much narrower than the previous frame's (max_change) means that one
+// junction is wrong (a box edge or a grout line taken for it). Only a narrower width: the lines
+// mistaken for a junction lie inside the floor, while a wider width is as often the correction of
+// an earlier mistake.
+bool MuchNarrower(const CorridorGeometry& previous, double max_change, const CorridorGeometry& g) {
+  return max_change > 0 && previous.width > 0 && g.width < (1 - max_change) * previous.width;
+}
+
+// Holds such a width: the wall that moved less since the previous frame stays, and the other one
+// is put at the previous width from it.
 void HoldWidth(const CorridorGeometry& previous, double max_change, CorridorGeometry* g,
                RecoverDepthResult* result) {
-  // Only a narrower width: the lines mistaken for a junction (box edges, grout) lie inside the
-  // floor, while a wider width is as often the correction of an earlier mistake.
-  if (!(max_change > 0) || !(previous.width > 0) ||
-      g->width >= (1 - max_change) * previous.width) {
-    return;
-  }
+  if (!MuchNarrower(previous, max_change, *g)) return;
   const bool keep_left = std::abs(g->LeftDistance() - previous.LeftDistance()) <=
                          std::abs(g->RightDistance() - previous.RightDistance());
   const double kept = keep_left ? g->LeftDistance() : g->RightDistance();
@@ -319,6 +321,7 @@ Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* res
   auto stage = Clock::now();
   CorridorGeometry geometry;
   Status status;
+  const CorridorGeometry* hold_from = nullptr;  // The previous geometry, when its width may be held.
   if (!result->junctions.status.ok()) {
     // One junction hidden: with a known width (the previous frame's, else the option) the other
     // wall follows; never a made-up second line. Otherwise the detector's reason stands.
@@ -350,7 +353,7 @@ Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* res
     status = CheckPlausible(geometry, options_);
     if (status.ok()) status = CheckLineFit(geometry, observation, camera, options_);
     if (!status.ok()) return finish(status);
-    if (previous != nullptr) HoldWidth(*previous, options_.max_width_change, &geometry, result);
+    hold_from = previous;  // Its width may be held below, after the ceiling's checks.
   }
   geometry.ceiling_height = options_.ceiling_height;
   stage = Clock::now();
@@ -377,16 +380,34 @@ Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* res
     if (!status.ok()) return finish(status);
     if (result->ceiling.found) geometry.ceiling_height = result->ceiling.height;
     bool lower_taken = false;
-    if (options_.ceiling_checks_baseboards && result->junctions.status.ok() &&
-        !result->width_held) {
+    if (options_.ceiling_checks_baseboards && result->junctions.status.ok()) {
       lower_taken = CheckBaseboards(camera, search, &edges, &geometry, result);
     }
     // A lower line taken has made the two ceiling sides agree: nothing for the inner-line check.
-    if (options_.ceiling_checks_inner_lines && result->junctions.status.ok() &&
-        !result->width_held && !lower_taken) {
+    if (options_.ceiling_checks_inner_lines && result->junctions.status.ok() && !lower_taken) {
       status = MoveInnerWall(search, &edges, previous, &geometry, result);
       if (!status.ok()) return finish(status);
     }
+  }
+  // The width hold comes after the checks, which may have moved a wall out with this frame's own
+  // evidence. A width still much narrower whose two ceiling junctions, each searched alone, agree
+  // (within 6%: what the baseboard check needs no check for) is this frame's walls confirmed: the
+  // previous frame's wider width was the wrong one, and holding it would carry the mistake on.
+  if (hold_from != nullptr && MuchNarrower(*hold_from, options_.max_width_change, geometry)) {
+    const double disagreement =
+        search_ceiling ? CeilingDisagreement(result->ceiling, geometry.camera_height) : -1;
+    if (!(disagreement >= 0 && disagreement <= std::log(1.06))) {
+      HoldWidth(*hold_from, options_.max_width_change, &geometry, result);
+      if (search_ceiling) {  // The ceiling of the held walls.
+        status = DetectCeiling(search.bgr, search.camera, geometry, options_.ceiling,
+                               &result->ceiling, &edges);
+        if (!status.ok()) return finish(status);
+        geometry.ceiling_height =
+            result->ceiling.found ? result->ceiling.height : options_.ceiling_height;
+      }
+    }
+  }
+  if (search_ceiling) {
     HoldCeiling(previous, options_.max_ceiling_disagreement, options_.ceiling.min_support,
                 &geometry, result);
   }

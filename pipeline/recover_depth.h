@@ -43,7 +43,8 @@ struct RecoverDepthOptions {
   InnerLineCheckOptions inner_line;        // That check's thresholds.
   double width_prior = 0.0;                // Width for frames where one junction is hidden, m (0 = none; a sequence uses the previous frame's).
   double max_width_change = 0.15;          // In a sequence, a width this much (relative) narrower than the previous frame's means one junction is
-                                           // wrong (a box edge or grout line taken for it): the previous width is held from the wall that moved less (0 = off).
+                                           // wrong (a box edge or grout line taken for it): the previous width is held from the wall that moved less (0 = off),
+                                           // after the ceiling's checks, unless the frame's two ceiling junctions agree within 6% (its walls confirmed).
   double max_ceiling_disagreement = 0.10;  // In a sequence, a ceiling not found, or whose two sides' heights above the camera differ by more than this
                                            // (|log ratio|; a wall distance is wrong), is replaced by the previous frame's height (0 = off).
   bool estimate_end_wall = true;           // Look for a wall across the corridor where both junctions end.
@@ -110,7 +111,8 @@ class DepthRecoverer {
   Status Detect(const cv::Mat& image, const Camera& camera, RecoverDepthResult* result) const;
   // `previous` (may be null) is the previous frame's geometry in a sequence: when one junction is
   // hidden, its width (and, without a vanishing point, its pitch) stands in; when the two
-  // junctions give a much narrower width (max_width_change), it is held (result->width_held).
+  // junctions give a much narrower width (max_width_change) that the ceiling's checks leave
+  // narrow and the frame's own ceiling does not confirm, it is held (result->width_held).
   Status Reconstruct(const Camera& camera, RecoverDepthResult* result,
                      const CorridorGeometry* previous = nullptr) const;
 

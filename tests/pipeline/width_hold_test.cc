@@ -1,7 +1,8 @@
 // Holding the width in a sequence: on a generated frame where a box hides the right junction, the
 // detector takes an edge inside the floor for it and the width comes out far too narrow. Given the
 // previous frame's true geometry, the width is held, and the result follows the generator's truth;
-// a wider width, or max_width_change = 0, is left alone.
+// a wider width, or max_width_change = 0, is left alone; so is a narrower width that the frame's
+// own ceiling confirms, or that the ceiling's checks correct first.
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -47,12 +48,13 @@ RecoverDepthOptions HoldOptions() {
   return options;
 }
 
+// Frame 10 (or `image`) recovered with `options`, given `previous`.
 RecoverDepthResult RecoverWith(const HiddenJunction& h, const RecoverDepthOptions& options,
-                       const CorridorGeometry* previous) {
+                               const CorridorGeometry* previous, const cv::Mat* image = nullptr) {
   std::unique_ptr<DepthRecoverer> recoverer;
   EXPECT_TRUE(DepthRecoverer::Create(options, &recoverer).ok());
   RecoverDepthResult result;
-  recoverer->Detect(h.frame.bgr, h.camera, &result);
+  recoverer->Detect(image != nullptr ? *image : h.frame.bgr, h.camera, &result);
   EXPECT_TRUE(result.status.ok()) << result.status.ToString();
   recoverer->Reconstruct(h.camera, &result, previous);
   EXPECT_TRUE(result.status.ok()) << result.status.ToString();
@@ -90,6 +92,35 @@ TEST(WidthHoldTest, AWiderWidthIsNotHeld) {
   EXPECT_FALSE(result.width_held);
   // (The frame's ceiling, measured against its too-near right wall, may still be held.)
   EXPECT_EQ(result.fallback.find("width"), std::string::npos) << result.fallback;
+}
+
+// The previous frame's width was the wrong one (30% too wide): this frame's narrower walls, whose
+// two ceiling junctions, each searched alone, agree, are kept.
+TEST(WidthHoldTest, AWidthItsOwnCeilingConfirmsIsNotHeld) {
+  const HiddenJunction h = MakeHiddenJunction();
+  const CorridorGeometry& truth = h.before.truth;
+  CorridorGeometry wrong = truth;
+  wrong.width = 1.3 * truth.width;
+  const RecoverDepthResult alone = RecoverWith(h, HoldOptions(), nullptr, &h.before.bgr);
+  // The premise: alone the frame is right, and much narrower than the wrong previous width.
+  ASSERT_NEAR(alone.geometry.width, truth.width, 0.03 * truth.width);
+  ASSERT_LT(alone.geometry.width, 0.85 * wrong.width);
+  EXPECT_TRUE(alone.ceiling_trusted);
+  const RecoverDepthResult result = RecoverWith(h, HoldOptions(), &wrong, &h.before.bgr);
+  EXPECT_FALSE(result.width_held) << result.fallback;
+  EXPECT_DOUBLE_EQ(result.geometry.width, alone.geometry.width);
+}
+
+// The ceiling's checks come before the hold: with the inner-line check on, this frame's right
+// wall is moved out to its ceiling junction's distance (within 5% here, as that check measures it),
+// and nothing is left to hold.
+TEST(WidthHoldTest, TheCeilingsChecksComeBeforeTheHold) {
+  const HiddenJunction h = MakeHiddenJunction();
+  const CorridorGeometry& truth = h.frame.truth;
+  const RecoverDepthResult result = RecoverWith(h, RecoverDepthOptions(), &h.previous);
+  EXPECT_FALSE(result.width_held) << result.fallback;
+  EXPECT_NE(result.fallback.find("right wall moved out"), std::string::npos) << result.fallback;
+  EXPECT_NEAR(result.geometry.width, truth.width, 0.05 * truth.width);
 }
 
 // In a stream, the width is held at most three frames in a row: then the narrow width is let go
