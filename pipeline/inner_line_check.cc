@@ -1,8 +1,45 @@
 #include "pipeline/inner_line_check.h"
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
+
+#include "core/corridor_frame.h"
+#include "perception/corridor_projection.h"
 
 namespace corridor {
+
+namespace {
+
+// Fraction of the floor/wall junction of wall `side` (at its distance in `g`) on edges of its
+// orientation, over its samples in view (at least a quarter of them counted): 80 samples from 1 to
+// 30 m, evenly spaced in inverse distance, as the ceiling search samples its lines. The edges are
+// the shared ones, extended down to the floor's rows.
+double FloorLineSupport(const cv::Mat& bgr, const Camera& camera, const CorridorGeometry& g,
+                        int side, ImageEdges* edges) {
+  constexpr int kSamples = 80;
+  constexpr double kNear = 1.0, kFar = 30.0;
+  const CorridorRotation<double> r(g.pitch, g.yaw);
+  const double x = side == 0 ? -g.LeftDistance() : g.RightDistance();
+  std::vector<cv::Point> line(kSamples, cv::Point(-1, -1));
+  int top = camera.image_height, bottom = -1;
+  for (int i = 0; i < kSamples; ++i) {
+    const double inv = 1.0 / kNear + (1.0 / kFar - 1.0 / kNear) * i / (kSamples - 1.0);
+    cv::Point p;
+    if (!ProjectCorridorPoint(camera, camera.HasDistortion(), r, x, g.camera_height, 1.0 / inv, 1,
+                              &p)) {
+      continue;
+    }
+    line[i] = p;
+    top = std::min(top, p.y);
+    bottom = std::max(bottom, p.y);
+  }
+  if (bottom < top) return 0;
+  const OrientedEdges band = ComputeOrientedEdges(bgr, top - 2, bottom + 3, edges);
+  return OrientedLineHits(line.data(), kSamples, band).Fraction(kSamples / 4);
+}
+
+}  // namespace
 
 bool InnerLineCheckOptions::Check(std::string* why) const {
   std::string reason;
@@ -13,6 +50,8 @@ bool InnerLineCheckOptions::Check(std::string* why) const {
     reason = "min_support and strong_support must be in (0, 1]";
   } else if (!(min_above_camera > 0 && std::isfinite(min_above_camera))) {
     reason = "min_above_camera must be positive";
+  } else if (!(max_line_support > 0 && max_line_support <= 1)) {
+    reason = "max_line_support must be in (0, 1]";
   }
   if (reason.empty()) return true;
   if (why != nullptr) *why = reason;
@@ -54,6 +93,11 @@ InnerLineCheck CheckInnerLine(const cv::Mat& bgr, const Camera& camera,
       trusted > ceiling.max_height) {
     return check;
   }
+  // A box's edge or a floor line taken for the junction follows edges over part of the way; a line
+  // on edges nearly all along, as a junction is, stays (the other wall is then the wrong one: put
+  // too far, which this check cannot tell from this one put too near).
+  check.line_support = FloorLineSupport(bgr, camera, *geometry, inner, edges);
+  if (check.line_support >= options.max_line_support) return check;
   double distance[2] = {geometry->LeftDistance(), geometry->RightDistance()};
   distance[inner] *= factor;
   geometry->SetWallDistances(distance[0], distance[1]);

@@ -22,6 +22,7 @@ struct InnerLineCheckOptions {
   double min_support = 0.35;       // Least fraction of each side's ceiling junction on edges (the ceiling search's own minimum), counted over at least half its samples.
   double strong_support = 0.45;    // When the trusted side reaches min_support only on its samples in view (a narrow vertical view shows its junction from a few metres on), the side to move needs this much, of at least half its samples.
   double min_above_camera = 0.2;   // The wide search: ceilings from this far above the camera, m, up to the ceiling search's max_height.
+  double max_line_support = 0.8;   // A floor junction on edges of its orientation over this fraction of its samples in view (1-30 m) is not moved: a box's edge or floor line covers less.
 
   bool Check(std::string* why) const;
 };
@@ -32,6 +33,7 @@ struct InnerLineCheck {
   double factor = 1;            // Its distance was multiplied by this (> 1).
   double side_height[2] = {0, 0};   // The wide search's ceiling height per side, m (0 = none).
   double side_support[2] = {0, 0};  // Their supports.
+  double line_support = 0;      // The floor junction to move: its support (0 when not measured).
 };
 
 // Runs the check on the search image (`bgr` with `camera`, as the ceiling search sees them);

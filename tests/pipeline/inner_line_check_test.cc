@@ -1,6 +1,7 @@
 // The inner-line check (pipeline/inner_line_check.h): a wall put too near (a line inside the
 // floor taken for its junction) is moved out to where its ceiling junction meets the other
-// side's ceiling. Truth from the generator: its frames and their true geometry.
+// side's ceiling; a wall on its junction is not. Truth from the generator: its frames and their
+// true geometry.
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -82,6 +83,37 @@ TEST(InnerLineCheckTest, ANarrowVerticalViewStillMovesTheWall) {
 }
 
 // The true geometry: both ceiling junctions agree, nothing moves.
+// The other wall put too far (a line beyond its junction taken for it): its ceiling comes out too
+// high, so the true wall's side is the lower one, as a wall put too near would make it. But that
+// wall's floor junction follows edges nearly all along (a box's edge or a floor line covers only
+// part of the way): it is not moved. Without that test it would be (the premise, checked with
+// max_line_support = 1).
+TEST(InnerLineCheckTest, AWallOnItsJunctionIsNotMovedWhenTheOtherIsTooFar) {
+  const Camera camera = synth::PaperCamera(0.66);
+  const synth::Frame frame = PlainFrame(camera);
+  ASSERT_FALSE(frame.bgr.empty());
+  const CorridorGeometry& truth = frame.truth;
+  for (const int far_side : {0, 1}) {
+    double distance[2] = {truth.LeftDistance(), truth.RightDistance()};
+    distance[far_side] *= 1.4;
+    CorridorGeometry wrong = truth;
+    wrong.SetWallDistances(distance[0], distance[1]);
+    InnerLineCheckOptions always;
+    always.max_line_support = 1;
+    CorridorGeometry g = wrong;
+    const InnerLineCheck premise =
+        CheckInnerLine(frame.bgr, camera, CeilingDetectorOptions(), always, &g);
+    ASSERT_TRUE(premise.moved) << far_side;
+    EXPECT_EQ(premise.side, 1 - far_side);
+    g = wrong;
+    const InnerLineCheck check =
+        CheckInnerLine(frame.bgr, camera, CeilingDetectorOptions(), InnerLineCheckOptions(), &g);
+    EXPECT_FALSE(check.moved) << far_side;
+    EXPECT_GE(check.line_support, InnerLineCheckOptions().max_line_support) << far_side;
+    EXPECT_EQ(g.width, wrong.width);
+  }
+}
+
 TEST(InnerLineCheckTest, TheTrueGeometryStays) {
   const Camera camera = synth::PaperCamera(0.66);
   const synth::Frame frame = PlainFrame(camera);
@@ -172,6 +204,12 @@ TEST(InnerLineCheckTest, BadOptionsAreRejected) {
   options.strong_support = 0;
   EXPECT_FALSE(options.Check(&why));
   EXPECT_NE(why.find("strong_support"), std::string::npos) << why;
+  for (const double bad : {0.0, 1.5, std::nan("")}) {
+    options = InnerLineCheckOptions();
+    options.max_line_support = bad;
+    EXPECT_FALSE(options.Check(&why)) << bad;
+    EXPECT_NE(why.find("max_line_support"), std::string::npos) << why;
+  }
   RecoverDepthOptions recover;
   recover.inner_line.min_support = 2;
   EXPECT_FALSE(recover.Check(&why));
