@@ -12,6 +12,7 @@
 #include "perception/edge_scan.h"
 #include "perception/floor_texture.h"
 #include "perception/junction_selector.h"
+#include "perception/junction_refit.h"
 #include "perception/line_segments.h"
 #include "perception/robust_line_fit.h"
 #include "perception/working_image.h"
@@ -106,6 +107,18 @@ JunctionLine Refine(const JunctionCandidate& candidate, const std::vector<Eigen:
   return out;
 }
 
+// The chosen lines' refit on the full-resolution image, when the search ran on a halved one
+// (off: nothing to do).
+struct FullResolutionRefit {
+  bool on = false;
+  const cv::Mat* bgr = nullptr;  // The full-resolution colour image.
+  JunctionRefitOptions options;
+
+  void Apply(JunctionLine* line) const {
+    if (on) RefitJunctionAtFullResolution(*bgr, options, line);
+  }
+};
+
 // The one visible junction when the other side has no candidate: the outermost line that looks
 // like the floor's edge, refined on its edge pixels, and where the other lines (grout, baseboards, other
 // wall lines along the corridor) meet it: the length-weighted median crossing above its support.
@@ -113,7 +126,7 @@ void KeepSingleJunction(const std::vector<JunctionCandidate>& side, bool is_left
                         const std::vector<MergedLine>& lines,
                         const std::vector<Eigen::Vector2d>& edges,
                         const JunctionDetectorOptions& options, int height,
-                        JunctionPair* result) {
+                        const FullResolutionRefit& refit, JunctionPair* result) {
   // Among the lines with floor below and something else above, the outermost: grout lines and
   // reflections lie inside the floor, baseboard tops and door bottoms have no floor below.
   double best_boundary = 0;
@@ -134,6 +147,7 @@ void KeepSingleJunction(const std::vector<JunctionCandidate>& side, bool is_left
   const Eigen::Vector2d top = m.start.y() < m.end.y() ? m.start : m.end;
   result->single = Refine(side[best], edges, top, is_left, options.support_distance_px,
                           height);
+  refit.Apply(&result->single);
   result->single_is_left = is_left;
   result->has_single = true;
   // Crossings of the other lines with this one, above its support's far end.
@@ -333,6 +347,12 @@ Status DetectJunctionsIn(const cv::Mat& bgr, const cv::Mat* halved,
   const double max_inclination = options.max_inclination_deg >= 0
                                      ? options.max_inclination_deg
                                      : 90.0 - std::atan2(height, width) * 180.0 / M_PI;
+  FullResolutionRefit refit;
+  refit.on = scale > 1 && options.refit_full_resolution;
+  refit.bgr = &color;
+  refit.options.reach_px = 2.0 * scale;
+  refit.options.threshold = options.canny_low_ratio * found.canny_high;
+  refit.options.support_distance_px = options.support_distance_px;
   const cv::Mat roi = color.rowRange(roi_top, height);
   const FloorAppearance floor = SampleFloor(roi, roi_top, 2 * scale);
   std::vector<JunctionCandidate> left, right;
@@ -352,7 +372,7 @@ Status DetectJunctionsIn(const cv::Mat& bgr, const cv::Mat* halved,
     const Status status = NoCorridor(result, msg.str());
     if (!left.empty() || !right.empty()) {
       KeepSingleJunction(left.empty() ? right : left, left.empty() ? false : true, lines,
-                         edge_points(), options, height, result);
+                         edge_points(), options, height, refit, result);
     }
     return status;
   }
@@ -382,6 +402,9 @@ Status DetectJunctionsIn(const cv::Mat& bgr, const cv::Mat* halved,
         Refine(right[pair.right_lower], edges, pair.vanishing_point, false, distance, height);
     result->has_right_lower = true;
   }
+  for (JunctionLine* line : {&result->left, &result->right}) refit.Apply(line);
+  if (result->has_left_lower) refit.Apply(&result->left_lower);
+  if (result->has_right_lower) refit.Apply(&result->right_lower);
   const Eigen::Vector3d vp = result->left.line.cross(result->right.line);
   result->vanishing_point =
       std::abs(vp.z()) > 1e-12 ? Eigen::Vector2d(vp.head<2>() / vp.z()) : pair.vanishing_point;

@@ -36,6 +36,7 @@ struct JunctionDetectorOptions {
   int strong_edge_gradient = 240;    // A strong edge: colour |dx| + |dy| (Sobel 3x3) at least this, a step of about 60 grey levels.
   double floor_line_tolerance_deg = 15;  // Floor edges within this of horizontal, vertical or the vanishing point are corridor lines (joints, tape, reflections).
   int max_work_width = 640;          // Wider images are halved (pyrDown) until they fit before edges and lines are found; 0 = full resolution.
+  bool refit_full_resolution = true;  // After a search on a halved image, each chosen junction is refitted on the full-resolution gradient (RefitJunctionAtFullResolution).
 
   bool Check(std::string* why) const;
 };
