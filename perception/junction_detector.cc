@@ -351,6 +351,7 @@ Status DetectJunctionsIn(const cv::Mat& bgr, const cv::Mat* halved,
   refit.on = scale > 1 && options.refit_full_resolution;
   refit.bgr = &color;
   refit.options.reach_px = 2.0 * scale;
+  refit.options.step_px = scale;  // As many points as the halved image has rows.
   refit.options.threshold = options.canny_low_ratio * found.canny_high;
   refit.options.support_distance_px = options.support_distance_px;
   const cv::Mat roi = color.rowRange(roi_top, height);

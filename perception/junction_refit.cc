@@ -68,7 +68,8 @@ std::vector<Eigen::Vector2d> EdgePointsAlong(const cv::Mat& bgr, const Eigen::Ve
   std::vector<Eigen::Vector2d> points;
   std::vector<double> m(2 * reach + 3);
   std::vector<int> smooth, step;
-  for (int k = std::max(1, major_lo); k <= std::min(major_size - 2, major_hi); ++k) {
+  const int stride = std::max(1, o.step_px);
+  for (int k = std::max(1, major_lo); k <= std::min(major_size - 2, major_hi); k += stride) {
     // Where the line crosses this row (column): a u + b v + c = 0.
     const double minor = by_rows ? -(line.y() * k + line.z()) / line.x()
                                  : -(line.x() * k + line.z()) / line.y();
@@ -104,18 +105,16 @@ bool RefitJunctionAtFullResolution(const cv::Mat& bgr, const JunctionRefitOption
   const double t_far = (junction->far_end - origin).dot(direction);
   const std::vector<Eigen::Vector2d> points =
       EdgePointsAlong(bgr, coarse, std::min(t_near, t_far), std::max(t_near, t_far), options);
+  // The line of least distance (robust to the odd point on another edge), then again on the
+  // points near it.
   Eigen::Vector3d line;
   if (!FitLineLeastDistance(points, &line)) return false;
   std::vector<Eigen::Vector2d> near;
-  for (int round = 0; round < 2; ++round) {
-    near.clear();
-    for (const auto& p : points) {
-      if (std::abs(line.dot(p.homogeneous())) <= options.support_distance_px) near.push_back(p);
-    }
-    Eigen::Vector3d refit;
-    if (!FitLineLeastDistance(near, &refit)) break;
-    line = refit;
+  for (const auto& p : points) {
+    if (std::abs(line.dot(p.homogeneous())) <= options.support_distance_px) near.push_back(p);
   }
+  Eigen::Vector3d refit;
+  if (FitLineLeastDistance(near, &refit)) line = refit;
   // The same orientation as the coarse line (normal pointing the same way).
   if (line.head<2>().dot(coarse.head<2>()) < 0) line = -line;
   const auto onto = [&](const Eigen::Vector2d& p) -> Eigen::Vector2d {
