@@ -103,6 +103,8 @@ bool RecoverDepthOptions::Check(std::string* why) const {
     reason = "max_width_change must be in [0, 1) (0 = off)";
   } else if (!(max_ceiling_disagreement >= 0 && std::isfinite(max_ceiling_disagreement))) {
     reason = "max_ceiling_disagreement must be finite and >= 0 (0 = off)";
+  } else if (!(max_ceiling_change >= 0 && max_ceiling_change < 1)) {
+    reason = "max_ceiling_change must be in [0, 1) (0 = off)";
   } else if (!(ceiling_height >= 0 && std::isfinite(ceiling_height))) {
     reason = "ceiling_height must be >= 0 (0 = unknown)";
   } else if (search_max_width != 0 && search_max_width < 64) {
@@ -194,6 +196,37 @@ void HoldCeiling(const CorridorGeometry* previous, double max_disagreement, doub
   how << ": the previous frame's " << held.ceiling_height << " m held";
   g->ceiling_height = held.ceiling_height;
   result->ceiling_held = true;
+  AddFallbackNote(how.str(), result);
+}
+
+// In a sequence, a ceiling whose two sides agree (trusted) but whose height above the camera is
+// far from the last trusted one's, with the width off by the same factor: both walls were put
+// wrong by that factor (lines inside the floor on both sides, as boxes' edges are, put both walls
+// too near, and their two ceiling sides, each scaled alike, agree with each other). The corridor's
+// ceiling does not change along it, and a corridor that narrows keeps its ceiling: both walls are
+// scaled to the trusted ceiling.
+void ScaleWallsToCeiling(const CorridorGeometry& previous, double max_change, CorridorGeometry* g,
+                         RecoverDepthResult* result) {
+  if (!(max_change > 0) || !previous.HasCeiling() || !result->ceiling_trusted ||
+      result->width_held || !(previous.width > 0) || !(g->width > 0)) {
+    return;
+  }
+  const double above_previous = previous.ceiling_height - g->camera_height;
+  const double above = g->ceiling_height - g->camera_height;
+  if (!(above_previous > 0.1) || !(above > 0.1)) return;
+  const double factor = above_previous / above;
+  const double width_factor = previous.width / g->width;
+  if (std::abs(std::log(factor)) <= std::log(1 + max_change) ||
+      std::abs(std::log(width_factor / factor)) > std::log(1.15)) {
+    return;
+  }
+  std::ostringstream how;
+  how.precision(2);
+  how << std::fixed << "both walls scaled " << factor << "x: both ceiling sides at "
+      << g->ceiling_height << " m against the previous frame's " << previous.ceiling_height
+      << " m (and the width alike): both junctions wrong alike";
+  g->SetWallDistances(factor * g->LeftDistance(), factor * g->RightDistance());
+  g->ceiling_height = previous.ceiling_height;
   AddFallbackNote(how.str(), result);
 }
 
@@ -410,6 +443,9 @@ Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* res
   if (search_ceiling) {
     HoldCeiling(previous, options_.max_ceiling_disagreement, options_.ceiling.min_support,
                 &geometry, result);
+    if (hold_from != nullptr) {
+      ScaleWallsToCeiling(*hold_from, options_.max_ceiling_change, &geometry, result);
+    }
   }
   result->times.ceiling = SecondsSince(stage);
   stage = Clock::now();

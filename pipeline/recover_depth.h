@@ -47,6 +47,9 @@ struct RecoverDepthOptions {
                                            // after the ceiling's checks, unless the frame's two ceiling junctions agree within 6% (its walls confirmed).
   double max_ceiling_disagreement = 0.10;  // In a sequence, a ceiling not found, or whose two sides' heights above the camera differ by more than this
                                            // (|log ratio|; a wall distance is wrong), is replaced by the previous frame's height (0 = off).
+  double max_ceiling_change = 0.25;        // In a sequence, a ceiling whose two sides agree but whose height above the camera is more than this
+                                           // (relative) off the last trusted one, with the width off by the same factor, means both walls are wrong
+                                           // by it (boxes' edges taken on both sides): both are scaled to the trusted ceiling (0 = off).
   bool estimate_end_wall = true;           // Look for a wall across the corridor where both junctions end.
   EndWallDetectorOptions end_wall;         // End-wall search (beyond the paper).
   int search_max_width = 640;              // Wider images are halved (pyrDown) until they fit, one copy shared by the ceiling and end-wall searches, px (0 = full resolution).

@@ -31,6 +31,11 @@ DEFINE_double(max_ceiling_disagreement, 0.10,
               "In a sequence, a frame whose ceiling was not found, or whose two sides' heights "
               "above the camera differ by more than this (|log ratio|), takes the previous "
               "frame's ceiling height (0 = off)");
+DEFINE_double(max_ceiling_change, 0.25,
+              "In a sequence, a ceiling whose two sides agree but whose height above the camera "
+              "is more than this (relative) off the last trusted one, the width off alike, means "
+              "both junctions are wrong alike: both walls are scaled to the trusted ceiling "
+              "(0 = off)");
 DEFINE_bool(end_wall, true,
             "Look for a wall across the corridor where both junctions end, and close the depth "
             "there (beyond the paper)");
@@ -74,6 +79,7 @@ Status RecoverDepthOptionsFromFlags(RecoverDepthOptions* options) {
   options->width_prior = FLAGS_width_prior;
   options->max_width_change = FLAGS_max_width_change;
   options->max_ceiling_disagreement = FLAGS_max_ceiling_disagreement;
+  options->max_ceiling_change = FLAGS_max_ceiling_change;
   options->points_per_line = FLAGS_points_per_line;
   options->search_max_width = FLAGS_search_max_width;
   options->perception.max_work_width = FLAGS_junction_max_width;

@@ -25,6 +25,7 @@ DECLARE_bool(inner_line_check);
 DECLARE_double(width_prior);
 DECLARE_double(max_width_change);
 DECLARE_double(max_ceiling_disagreement);
+DECLARE_double(max_ceiling_change);
 DECLARE_int32(points_per_line);
 DECLARE_int32(search_max_width);
 DECLARE_int32(junction_max_width);

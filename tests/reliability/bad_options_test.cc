@@ -119,6 +119,7 @@ TEST(BadOptions, DepthToolExitsTwoBeforeAnyWork) {
       {"--ceiling_height=-2", "ceiling_height"},
       {"--max_width_change=1.5", "max_width_change"},
       {"--max_ceiling_disagreement=-1", "max_ceiling_disagreement"},
+      {"--max_ceiling_change=1", "max_ceiling_change"},
       {"--vis_max_depth=0", "--vis_max_depth"},
       {"--no_such_flag=1", "no_such_flag"},
       {"stray_argument", "unexpected argument 'stray_argument'"},

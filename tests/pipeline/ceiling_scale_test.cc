@@ -1,0 +1,102 @@
+// Scaling both walls to the trusted ceiling in a sequence (RecoverDepthOptions::max_ceiling_change):
+// when this frame's ceiling, its two sides agreeing, and its width are both off the previous
+// frame's by the same factor, both walls are taken to be wrong by it. A rendered corridor, seen
+// right, against a previous geometry 1.4 times as large (the mirror of a frame whose walls were
+// both put 1.4 times too near): its walls are scaled out by the factor of the heights above the
+// camera, computed here by hand. A narrower corridor under the same ceiling, or a higher ceiling
+// over the same width, is left alone.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "pipeline/recover_depth.h"
+#include "synth/presets.h"
+#include "tests/support/corridor_frame.h"
+
+namespace corridor {
+namespace {
+
+struct Seen {
+  Camera camera;
+  synth::Frame frame;
+};
+
+Seen PlainCorridor() {
+  Seen s;
+  s.camera = synth::PaperCamera(0.66);
+  s.frame = testing_util::RenderCorridorFrame(s.camera, 2.4, 2.7, 3,
+                                              synth::CameraPose{0.05, 0.04, 0.25, 0.66, 3.0}, 0.0);
+  return s;
+}
+
+RecoverDepthResult RecoverAfter(const Seen& s, const CorridorGeometry* previous,
+                                const RecoverDepthOptions& options = RecoverDepthOptions()) {
+  std::unique_ptr<DepthRecoverer> recoverer;
+  EXPECT_TRUE(DepthRecoverer::Create(options, &recoverer).ok());
+  RecoverDepthResult result;
+  EXPECT_TRUE(recoverer->Detect(s.frame.bgr, s.camera, &result).ok());
+  EXPECT_TRUE(recoverer->Reconstruct(s.camera, &result, previous).ok())
+      << result.status.ToString();
+  return result;
+}
+
+TEST(CeilingScaleTest, BothWallsFollowATrustedCeilingWhenTheWidthAgrees) {
+  const Seen s = PlainCorridor();
+  ASSERT_FALSE(s.frame.bgr.empty());
+  const CorridorGeometry& truth = s.frame.truth;
+  const double h = truth.camera_height, factor = 1.4;
+  // Alone the frame is right, its two ceiling sides agreeing: the premise.
+  const RecoverDepthResult alone = RecoverAfter(s, nullptr);
+  ASSERT_NEAR(alone.geometry.width, truth.width, 0.02 * truth.width);
+  ASSERT_TRUE(alone.ceiling_trusted);
+  CorridorGeometry larger = alone.geometry;
+  larger.SetWallDistances(factor * alone.geometry.LeftDistance(),
+                          factor * alone.geometry.RightDistance());
+  larger.ceiling_height = h + factor * (alone.geometry.ceiling_height - h);
+
+  const RecoverDepthResult scaled = RecoverAfter(s, &larger);
+  EXPECT_NE(scaled.fallback.find("both walls scaled"), std::string::npos) << scaled.fallback;
+  EXPECT_NEAR(scaled.geometry.width, larger.width, 0.01 * larger.width);
+  EXPECT_NEAR(scaled.geometry.LeftDistance(), larger.LeftDistance(), 0.01 * larger.width);
+  EXPECT_DOUBLE_EQ(scaled.geometry.ceiling_height, larger.ceiling_height);
+  EXPECT_FALSE(scaled.width_held);
+
+  RecoverDepthOptions off;
+  off.max_ceiling_change = 0;
+  const RecoverDepthResult not_scaled = RecoverAfter(s, &larger, off);
+  EXPECT_EQ(not_scaled.fallback.find("both walls scaled"), std::string::npos);
+  EXPECT_NEAR(not_scaled.geometry.width, truth.width, 0.02 * truth.width);
+}
+
+TEST(CeilingScaleTest, ANarrowerCorridorOrAHigherCeilingAloneIsLeftAlone) {
+  const Seen s = PlainCorridor();
+  ASSERT_FALSE(s.frame.bgr.empty());
+  const CorridorGeometry& truth = s.frame.truth;
+  const RecoverDepthResult alone = RecoverAfter(s, nullptr);
+  ASSERT_TRUE(alone.ceiling_trusted);
+  const double h = truth.camera_height;
+  // The previous frame 1.4 times as wide under the same ceiling (the corridor has narrowed).
+  CorridorGeometry wider = alone.geometry;
+  wider.SetWallDistances(1.4 * alone.geometry.LeftDistance(), 1.4 * alone.geometry.RightDistance());
+  // The previous frame as wide, under a ceiling 1.4 times as high above the camera.
+  CorridorGeometry higher = alone.geometry;
+  higher.ceiling_height = h + 1.4 * (alone.geometry.ceiling_height - h);
+  for (const CorridorGeometry* previous : {&wider, &higher}) {
+    const RecoverDepthResult result = RecoverAfter(s, previous);
+    EXPECT_EQ(result.fallback.find("both walls scaled"), std::string::npos) << result.fallback;
+    EXPECT_NEAR(result.geometry.width, truth.width, 0.02 * truth.width) << result.fallback;
+  }
+}
+
+TEST(CeilingScaleTest, OptionOutsideItsRangeIsRejected) {
+  for (const double bad : {-0.1, 1.0, std::nan("")}) {
+    RecoverDepthOptions options;
+    options.max_ceiling_change = bad;
+    std::string why;
+    EXPECT_FALSE(options.Check(&why)) << bad;
+    EXPECT_NE(why.find("max_ceiling_change"), std::string::npos) << why;
+  }
+}
+
+}  // namespace
+}  // namespace corridor
