@@ -227,6 +227,7 @@ void ScaleWallsToCeiling(const CorridorGeometry& previous, double max_change, Co
       << " m (and the width alike): both junctions wrong alike";
   g->SetWallDistances(factor * g->LeftDistance(), factor * g->RightDistance());
   g->ceiling_height = previous.ceiling_height;
+  result->walls_scaled = true;
   AddFallbackNote(how.str(), result);
 }
 

@@ -78,6 +78,7 @@ struct RecoverDepthResult {
   std::string fallback;           // Non-empty when the geometry is not the two junction lines' alone: how
                                   // (one junction and a known width, or the previous frame's width held).
   bool width_held = false;        // True when the previous frame's width replaced this frame's (max_width_change).
+  bool walls_scaled = false;      // True when both walls were scaled to the previous trusted ceiling (max_ceiling_change).
   bool ceiling_held = false;      // True when the previous frame's ceiling height replaced this frame's (max_ceiling_disagreement).
   bool ceiling_trusted = false;   // True when the ceiling search found the ceiling and both sides, strong enough to compare, agreed within max_ceiling_disagreement.
 

@@ -7,8 +7,9 @@ namespace corridor {
 
 // What a sequence carries from frame to frame: the last good geometry, whose width stands in when
 // one junction is hidden and is held when the next width is much narrower (RecoverDepthOptions::
-// max_width_change). Held kMaxHeld frames in a row, the width is let go for one frame: the
-// corridor may really have narrowed, or the held width was the wrong one.
+// max_width_change). Held kMaxHeld frames in a row (or its walls scaled to its trusted ceiling,
+// max_ceiling_change), the width is let go for one frame: the corridor may really have narrowed,
+// or the held width (the trusted ceiling) was the wrong one.
 // Its ceiling height is the last one whose two sides agreed (RecoverDepthResult::ceiling_trusted),
 // or none: only such a height is held over a frame whose sides disagree.
 class SequencePrior {
@@ -30,13 +31,13 @@ class SequencePrior {
     previous_ = result.geometry;
     previous_.ceiling_height = trusted;
     has_previous_ = true;
-    held_ = result.width_held ? held_ + 1 : 0;
+    held_ = result.width_held || result.walls_scaled ? held_ + 1 : 0;
   }
 
  private:
   CorridorGeometry previous_;
   bool has_previous_ = false;
-  int held_ = 0;  // Frames in a row whose width was held.
+  int held_ = 0;  // Frames in a row whose width was held or walls scaled.
 };
 
 }  // namespace corridor

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include "pipeline/frame_pipeline.h"
 #include "pipeline/recover_depth.h"
 #include "synth/presets.h"
 #include "tests/support/corridor_frame.h"
@@ -85,6 +86,49 @@ TEST(CeilingScaleTest, ANarrowerCorridorOrAHigherCeilingAloneIsLeftAlone) {
     const RecoverDepthResult result = RecoverAfter(s, previous);
     EXPECT_EQ(result.fallback.find("both walls scaled"), std::string::npos) << result.fallback;
     EXPECT_NEAR(result.geometry.width, truth.width, 0.02 * truth.width) << result.fallback;
+  }
+}
+
+// A stream whose first frame is a corridor 1.4 times as large (wider, its ceiling 1.4 times as high
+// above the camera), then five frames of the plain one: each looks like both walls put 1.4 times
+// too near, and is scaled, but at most three frames in a row (as a held width is): the fourth is
+// taken as it is, and the fifth follows it.
+TEST(CeilingScaleTest, AStreamScalesTheWallsThreeFramesAtMost) {
+  const Seen s = PlainCorridor();
+  ASSERT_FALSE(s.frame.bgr.empty());
+  const double h = 0.66, factor = 1.4;
+  const synth::Frame large = testing_util::RenderCorridorFrame(
+      s.camera, factor * 2.4, h + factor * (2.7 - h), 3,
+      synth::CameraPose{0.05, 0.04, factor * 0.25, 0.66, 3.0}, 0.0);
+  ASSERT_FALSE(large.bgr.empty());
+  std::unique_ptr<DepthRecoverer> recoverer;
+  ASSERT_TRUE(DepthRecoverer::Create(RecoverDepthOptions(), &recoverer).ok());
+  int next = 0;
+  std::vector<bool> scaled;
+  std::vector<double> widths;
+  FramePipeline pipeline(*recoverer);
+  ASSERT_EQ(pipeline.Run(
+                [&](PipelineFrame* frame) {
+                  if (next == 6) return false;
+                  frame->name = std::to_string(next);
+                  frame->camera = &s.camera;
+                  frame->image = next == 0 ? large.bgr : s.frame.bgr;
+                  ++next;
+                  return true;
+                },
+                [&](PipelineFrame&& frame) {
+                  EXPECT_TRUE(frame.result.status.ok()) << frame.result.status.ToString();
+                  scaled.push_back(frame.result.walls_scaled);
+                  widths.push_back(frame.result.geometry.width);
+                  return true;
+                }),
+            6);
+  // The premise: the large corridor's frame is recovered right.
+  ASSERT_NEAR(widths[0], large.truth.width, 0.02 * large.truth.width);
+  EXPECT_EQ(scaled, (std::vector<bool>{false, true, true, true, false, false}));
+  for (int i = 1; i <= 3; ++i) EXPECT_NEAR(widths[i], widths[0], 0.02 * widths[0]) << i;
+  for (int i = 4; i <= 5; ++i) {
+    EXPECT_NEAR(widths[i], s.frame.truth.width, 0.02 * s.frame.truth.width) << i;
   }
 }
 
