@@ -95,6 +95,23 @@ RowProjector ChooseRowProjector(bool distorted) {
   return nullptr;
 }
 
+// The distances of a line's samples along the corridor: `samples` from near_distance to
+// far_distance, evenly spaced in inverse distance.
+std::vector<double> SampleDepths(const CeilingDetectorOptions& o) {
+  std::vector<double> depths(o.samples);
+  for (int i = 0; i < o.samples; ++i) {
+    const double inv = 1.0 / o.near_distance +
+                       (1.0 / o.far_distance - 1.0 / o.near_distance) * i / (o.samples - 1.0);
+    depths[i] = 1.0 / inv;
+  }
+  return depths;
+}
+
+// Samples a line must count as visible at least, when judged on those in view.
+int CountedSamples(const CeilingDetectorOptions& o) {
+  return std::max(1, static_cast<int>(std::lround(o.min_counted_fraction * o.samples)));
+}
+
 void ProjectSearchLines(const Camera& camera, const CorridorGeometry& g,
                         const CeilingDetectorOptions& o, SearchLines* lines) {
   const CorridorRotation<double> r(g.pitch, g.yaw);
@@ -105,12 +122,7 @@ void ProjectSearchLines(const Camera& camera, const CorridorGeometry& g,
     lines->heights.push_back(height);
   }
   lines->samples = o.samples;
-  std::vector<double> depths(o.samples);
-  for (int i = 0; i < o.samples; ++i) {
-    const double inv = 1.0 / o.near_distance +
-                       (1.0 / o.far_distance - 1.0 / o.near_distance) * i / (o.samples - 1.0);
-    depths[i] = 1.0 / inv;
-  }
+  const std::vector<double> depths = SampleDepths(o);
   // Every point is written below; the buffer keeps its memory from the thread's last search.
   lines->pixels.resize(lines->heights.size() * 2 * o.samples);
   lines->top = camera.image_height;
@@ -202,8 +214,7 @@ Status DetectCeiling(const cv::Mat& bgr, const Camera& camera, const CorridorGeo
   }
   // The search above compares heights by the fraction of at least half the samples; whether the
   // chosen lines are there is judged on the samples in view (at least min_counted_fraction).
-  const int counted = std::max(
-      1, static_cast<int>(std::lround(o.min_counted_fraction * lines.samples)));
+  const int counted = CountedSamples(o);
   const double best_left = best_hits[0].Fraction(counted);
   const double best_right = best_hits[1].Fraction(counted);
   for (int side = 0; side < 2; ++side) {
@@ -250,6 +261,26 @@ Status DetectCeiling(const cv::Mat& bgr, const Camera& camera, const CorridorGeo
   estimate->found = estimate->height > h;
   if (!estimate->found) estimate->reason = "the ceiling estimate lies below the camera";
   return Status::Ok();
+}
+
+double CorridorLineSupport(const cv::Mat& bgr, const Camera& camera, const CorridorGeometry& g,
+                           double x, double y, const CeilingDetectorOptions& o, ImageEdges* edges) {
+  if (bgr.empty() || !o.Check(nullptr)) return 0;
+  const CorridorRotation<double> r(g.pitch, g.yaw);
+  const bool distorted = camera.HasDistortion();
+  const std::vector<double> depths = SampleDepths(o);
+  std::vector<cv::Point> line(o.samples, cv::Point(-1, -1));
+  int top = camera.image_height, bottom = -1;
+  for (int i = 0; i < o.samples; ++i) {
+    cv::Point p;
+    if (!ProjectCorridorPoint(camera, distorted, r, x, y, depths[i], 1, &p)) continue;
+    line[i] = p;
+    top = std::min(top, p.y);
+    bottom = std::max(bottom, p.y);
+  }
+  if (bottom < top) return 0;
+  const OrientedEdges band = ComputeOrientedEdges(bgr, top - 2, bottom + 3, edges);
+  return OrientedLineHits(line.data(), o.samples, band).Fraction(CountedSamples(o));
 }
 
 }  // namespace corridor

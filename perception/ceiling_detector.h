@@ -50,4 +50,13 @@ Status DetectCeiling(const cv::Mat& bgr, const Camera& camera, const CorridorGeo
                      const CeilingDetectorOptions& options, CeilingEstimate* estimate,
                      ImageEdges* edges = nullptr);
 
+// Fraction of the corridor line (x, y, Z) (a wall's junction with the floor at y = camera height,
+// or with the ceiling) on edges of its orientation, its samples taken as the ceiling search takes
+// them (options.samples, near_distance to far_distance, evenly in inverse distance) and judged as
+// it judges its chosen lines: over the samples in view, at least min_counted_fraction counted.
+// `edges` as for DetectCeiling, extended down to the line's rows. 0 when no sample is in view.
+double CorridorLineSupport(const cv::Mat& bgr, const Camera& camera, const CorridorGeometry& g,
+                           double x, double y, const CeilingDetectorOptions& options,
+                           ImageEdges* edges = nullptr);
+
 }  // namespace corridor

@@ -1,45 +1,8 @@
 #include "pipeline/inner_line_check.h"
 
-#include <algorithm>
 #include <cmath>
-#include <vector>
-
-#include "core/corridor_frame.h"
-#include "perception/corridor_projection.h"
 
 namespace corridor {
-
-namespace {
-
-// Fraction of the floor/wall junction of wall `side` (at its distance in `g`) on edges of its
-// orientation, over its samples in view (at least a quarter of them counted): 80 samples from 1 to
-// 30 m, evenly spaced in inverse distance, as the ceiling search samples its lines. The edges are
-// the shared ones, extended down to the floor's rows.
-double FloorLineSupport(const cv::Mat& bgr, const Camera& camera, const CorridorGeometry& g,
-                        int side, ImageEdges* edges) {
-  constexpr int kSamples = 80;
-  constexpr double kNear = 1.0, kFar = 30.0;
-  const CorridorRotation<double> r(g.pitch, g.yaw);
-  const double x = side == 0 ? -g.LeftDistance() : g.RightDistance();
-  std::vector<cv::Point> line(kSamples, cv::Point(-1, -1));
-  int top = camera.image_height, bottom = -1;
-  for (int i = 0; i < kSamples; ++i) {
-    const double inv = 1.0 / kNear + (1.0 / kFar - 1.0 / kNear) * i / (kSamples - 1.0);
-    cv::Point p;
-    if (!ProjectCorridorPoint(camera, camera.HasDistortion(), r, x, g.camera_height, 1.0 / inv, 1,
-                              &p)) {
-      continue;
-    }
-    line[i] = p;
-    top = std::min(top, p.y);
-    bottom = std::max(bottom, p.y);
-  }
-  if (bottom < top) return 0;
-  const OrientedEdges band = ComputeOrientedEdges(bgr, top - 2, bottom + 3, edges);
-  return OrientedLineHits(line.data(), kSamples, band).Fraction(kSamples / 4);
-}
-
-}  // namespace
 
 bool InnerLineCheckOptions::Check(std::string* why) const {
   std::string reason;
@@ -96,7 +59,9 @@ InnerLineCheck CheckInnerLine(const cv::Mat& bgr, const Camera& camera,
   // A box's edge or a floor line taken for the junction follows edges over part of the way; a line
   // on edges nearly all along, as a junction is, stays (the other wall is then the wrong one: put
   // too far, which this check cannot tell from this one put too near).
-  check.line_support = FloorLineSupport(bgr, camera, *geometry, inner, edges);
+  const double wall_x = inner == 0 ? -geometry->LeftDistance() : geometry->RightDistance();
+  check.line_support =
+      CorridorLineSupport(bgr, camera, *geometry, wall_x, h, ceiling, edges);
   if (check.line_support >= options.max_line_support) return check;
   double distance[2] = {geometry->LeftDistance(), geometry->RightDistance()};
   distance[inner] *= factor;

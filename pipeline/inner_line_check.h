@@ -22,7 +22,7 @@ struct InnerLineCheckOptions {
   double min_support = 0.35;       // Least fraction of each side's ceiling junction on edges (the ceiling search's own minimum), counted over at least half its samples.
   double strong_support = 0.45;    // When the trusted side reaches min_support only on its samples in view (a narrow vertical view shows its junction from a few metres on), the side to move needs this much, of at least half its samples.
   double min_above_camera = 0.2;   // The wide search: ceilings from this far above the camera, m, up to the ceiling search's max_height.
-  double max_line_support = 0.8;   // A floor junction on edges of its orientation over this fraction of its samples in view (1-30 m) is not moved: a box's edge or floor line covers less.
+  double max_line_support = 0.8;   // A floor junction on edges of its orientation over this fraction of its samples in view (sampled as the ceiling search samples its lines) is not moved: a box's edge or floor line covers less.
 
   bool Check(std::string* why) const;
 };
