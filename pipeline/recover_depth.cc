@@ -125,6 +125,10 @@ bool RecoverDepthOptions::Check(std::string* why) const {
 
 namespace {
 
+// Two ceiling sides, each searched alone, whose heights above the camera are within this ratio
+// agree: their walls need no check (CheckBaseboards), and confirm a narrower width (the hold).
+constexpr double kSidesAgree = 1.06;
+
 // Adds how the geometry came about to result->fallback ("; " between notes).
 void AddFallbackNote(const std::string& how, RecoverDepthResult* result) {
   result->fallback += (result->fallback.empty() ? "" : "; ") + how;
@@ -355,7 +359,6 @@ Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* res
   auto stage = Clock::now();
   CorridorGeometry geometry;
   Status status;
-  const CorridorGeometry* hold_from = nullptr;  // The previous geometry, when its width may be held.
   if (!result->junctions.status.ok()) {
     // One junction hidden: with a known width (the previous frame's, else the option) the other
     // wall follows; never a made-up second line. Otherwise the detector's reason stands.
@@ -387,7 +390,6 @@ Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* res
     status = CheckPlausible(geometry, options_);
     if (status.ok()) status = CheckLineFit(geometry, observation, camera, options_);
     if (!status.ok()) return finish(status);
-    hold_from = previous;  // Its width may be held below, after the ceiling's checks.
   }
   geometry.ceiling_height = options_.ceiling_height;
   stage = Clock::now();
@@ -409,10 +411,8 @@ Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* res
     ComputeImageEdges(search.bgr, &edges);
   }
   if (search_ceiling) {
-    status = DetectCeiling(search.bgr, search.camera, geometry, options_.ceiling, &result->ceiling,
-                           &edges);
+    status = SearchCeiling(search, &edges, &geometry, &result->ceiling);
     if (!status.ok()) return finish(status);
-    if (result->ceiling.found) geometry.ceiling_height = result->ceiling.height;
     bool lower_taken = false;
     if (options_.ceiling_checks_baseboards && result->junctions.status.ok()) {
       lower_taken = CheckBaseboards(camera, search, &edges, &geometry, result);
@@ -427,17 +427,16 @@ Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* res
   // evidence. A width still much narrower whose two ceiling junctions, each searched alone, agree
   // (within 6%: what the baseboard check needs no check for) is this frame's walls confirmed: the
   // previous frame's wider width was the wrong one, and holding it would carry the mistake on.
+  // (Only a width from two junctions: with one, the previous width is already this frame's.)
+  const CorridorGeometry* hold_from = result->junctions.status.ok() ? previous : nullptr;
   if (hold_from != nullptr && MuchNarrower(*hold_from, options_.max_width_change, geometry)) {
     const double disagreement =
         search_ceiling ? CeilingDisagreement(result->ceiling, geometry.camera_height) : -1;
-    if (!(disagreement >= 0 && disagreement <= std::log(1.06))) {
+    if (!(disagreement >= 0 && disagreement <= std::log(kSidesAgree))) {
       HoldWidth(*hold_from, options_.max_width_change, &geometry, result);
       if (search_ceiling) {  // The ceiling of the held walls.
-        status = DetectCeiling(search.bgr, search.camera, geometry, options_.ceiling,
-                               &result->ceiling, &edges);
+        status = SearchCeiling(search, &edges, &geometry, &result->ceiling);
         if (!status.ok()) return finish(status);
-        geometry.ceiling_height =
-            result->ceiling.found ? result->ceiling.height : options_.ceiling_height;
       }
     }
   }
@@ -476,7 +475,8 @@ bool DepthRecoverer::CheckBaseboards(const Camera& camera, const WorkingImage& s
   // geometry, so that neither ceiling junction is where it is sought), a lower line must find
   // both, each with the ceiling search's own minimum support, agreeing within 3%: two weak
   // searches that agree that closely do not do so by chance.
-  const double agree = std::log(1.06), accept = std::log(1.08), weak_accept = std::log(1.03);
+  const double agree = std::log(kSidesAgree), accept = std::log(1.08),
+               weak_accept = std::log(1.03);
   const double before = CeilingDisagreement(result->ceiling, geometry->camera_height);
   if (before >= 0 && before <= agree) return false;
   const bool compared = before >= 0;
@@ -535,6 +535,16 @@ bool DepthRecoverer::CheckBaseboards(const Camera& camera, const WorkingImage& s
   return true;
 }
 
+Status DepthRecoverer::SearchCeiling(const WorkingImage& search, ImageEdges* edges,
+                                     CorridorGeometry* geometry, CeilingEstimate* estimate) const {
+  const Status status =
+      DetectCeiling(search.bgr, search.camera, *geometry, options_.ceiling, estimate, edges);
+  if (status.ok()) {
+    geometry->ceiling_height = estimate->found ? estimate->height : options_.ceiling_height;
+  }
+  return status;
+}
+
 Status DepthRecoverer::MoveInnerWall(const WorkingImage& search, ImageEdges* edges,
                                      const CorridorGeometry* previous, CorridorGeometry* geometry,
                                      RecoverDepthResult* result) const {
@@ -560,10 +570,8 @@ Status DepthRecoverer::MoveInnerWall(const WorkingImage& search, ImageEdges* edg
     return Status::Ok();
   }
   CeilingEstimate ceiling;
-  const Status status =
-      DetectCeiling(search.bgr, search.camera, moved, options_.ceiling, &ceiling, edges);
+  const Status status = SearchCeiling(search, edges, &moved, &ceiling);
   if (!status.ok()) return status;
-  moved.ceiling_height = ceiling.found ? ceiling.height : options_.ceiling_height;
   result->ceiling = ceiling;
   *geometry = moved;
   std::ostringstream how;

@@ -125,6 +125,11 @@ class DepthRecoverer {
  private:
   DepthRecoverer(const RecoverDepthOptions& options, std::unique_ptr<CorridorSolver> solver,
                  std::unique_ptr<DepthRasterizer> rasterizer);
+  // The ceiling search on `search` for the walls of *geometry into *estimate; the geometry's
+  // ceiling height becomes the one found (RecoverDepthOptions::ceiling_height when none is).
+  // `edges`: the frame's edges of the search image, shared by its searches.
+  Status SearchCeiling(const WorkingImage& search, ImageEdges* edges, CorridorGeometry* geometry,
+                       CeilingEstimate* estimate) const;
   // ceiling_checks_baseboards: when both ceiling junctions were searched alone and disagree (or
   // were too weak to compare), and a side has a lower parallel line, the geometry and ceiling with
   // that line instead, if they make the two agree. Updates *geometry and *result (junctions,
