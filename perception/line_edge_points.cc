@@ -1,0 +1,110 @@
+#include "perception/line_edge_points.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace corridor {
+namespace {
+
+// The colour gradient across the line of unit normal n at `count` pixels in a row from (u0, v)
+// (by_rows) or in a column from (k, v0) (!by_rows), all at least one pixel inside the image:
+// |n . (dx, dy)| of the 3x3 Sobel, the strongest of the three channels, into m[0..count). The
+// Sobel's sums across the run are shared between neighbours: `smooth` (1 2 1 across the run) and
+// `step` (the difference across it), one per pixel and channel of the run and its two ends.
+void GradientsAcross(const cv::Mat& bgr, bool by_rows, int major, int first, int count,
+                     const Eigen::Vector2d& n, std::vector<int>* smooth, std::vector<int>* step,
+                     double* m) {
+  const int cells = 3 * (count + 2);
+  smooth->resize(cells);
+  step->resize(cells);
+  int* sm = smooth->data();
+  int* st = step->data();
+  if (by_rows) {
+    // The run and its two ends are contiguous in the three rows around it.
+    const uchar* before = bgr.ptr<uchar>(major - 1) + 3 * (first - 1);
+    const uchar* mid = bgr.ptr<uchar>(major) + 3 * (first - 1);
+    const uchar* after = bgr.ptr<uchar>(major + 1) + 3 * (first - 1);
+    for (int k = 0; k < cells; ++k) {
+      sm[k] = before[k] + 2 * mid[k] + after[k];
+      st[k] = after[k] - before[k];
+    }
+  } else {
+    // Pixel i of the run lies in row first - 1 + i, its neighbours across in columns major -+ 1.
+    for (int i = 0; i < count + 2; ++i) {
+      const uchar* p = bgr.ptr<uchar>(first - 1 + i) + 3 * (major - 1);
+      for (int c = 0; c < 3; ++c) {
+        sm[3 * i + c] = p[c] + 2 * p[3 + c] + p[6 + c];
+        st[3 * i + c] = p[6 + c] - p[c];
+      }
+    }
+  }
+  // Along the run: the derivative of `smooth`; across it: `step` smoothed (1 2 1).
+  const double n_along = by_rows ? n.x() : n.y(), n_across = by_rows ? n.y() : n.x();
+  for (int i = 0; i < count; ++i) {
+    double best = 0;
+    for (int c = 0; c < 3; ++c) {
+      const int along = sm[3 * (i + 2) + c] - sm[3 * i + c];
+      const int across = st[3 * i + c] + 2 * st[3 * (i + 1) + c] + st[3 * (i + 2) + c];
+      best = std::max(best, std::abs(n_along * along + n_across * across));
+    }
+    m[i] = best;
+  }
+}
+
+}  // namespace
+
+int EdgePeaksAlong(const cv::Mat& bgr, const Eigen::Vector3d& line, double t0, double t1,
+                    const EdgePeakSearch& search, std::vector<EdgePeak>* peaks) {
+  if (bgr.empty() || bgr.type() != CV_8UC3) return 0;
+  const Eigen::Vector2d n = line.head<2>();
+  const Eigen::Vector2d direction(line.y(), -line.x());
+  const Eigen::Vector2d origin = -line.z() * n;
+  const bool by_rows = CrossedByRows(line);
+  const Eigen::Vector2d a = origin + t0 * direction, b = origin + t1 * direction;
+  const int major_lo = static_cast<int>(std::ceil(std::min(by_rows ? a.y() : a.x(),
+                                                           by_rows ? b.y() : b.x())));
+  const int major_hi = static_cast<int>(std::floor(std::max(by_rows ? a.y() : a.x(),
+                                                            by_rows ? b.y() : b.x())));
+  const int major_size = by_rows ? bgr.rows : bgr.cols, minor_size = by_rows ? bgr.cols : bgr.rows;
+  const int reach = static_cast<int>(std::ceil(search.reach_px));
+  std::vector<double> m(2 * reach + 3);
+  std::vector<int> smooth, step;
+  const int stride = std::max(1, search.step_px);
+  int searched = 0;
+  for (int k = std::max(1, major_lo); k <= std::min(major_size - 2, major_hi); k += stride) {
+    // Where the line crosses this row (column): a u + b v + c = 0.
+    const double minor = by_rows ? -(line.y() * k + line.z()) / line.x()
+                                 : -(line.x() * k + line.z()) / line.y();
+    if (!std::isfinite(minor)) continue;
+    const int centre = static_cast<int>(std::lround(minor));
+    const int first = centre - reach - 1;  // m[0] is one beyond the reach, for the peak test.
+    if (first < 1 || first + 2 * reach + 2 > minor_size - 2) continue;
+    GradientsAcross(bgr, by_rows, k, first, 2 * reach + 3, n, &smooth, &step, m.data());
+    ++searched;
+    const auto peak_at = [&](int i) {
+      const double curve = m[i - 1] - 2 * m[i] + m[i + 1];
+      const double shift =
+          curve < 0 ? std::clamp(0.5 * (m[i - 1] - m[i + 1]) / curve, -0.5, 0.5) : 0.0;
+      const double at = first + i + shift;
+      EdgePeak peak;
+      peak.point = by_rows ? Eigen::Vector2d(at, k) : Eigen::Vector2d(k, at);
+      peak.major = k;
+      peak.offset = at - minor;
+      peak.strength = m[i];
+      return peak;
+    };
+    int nearest = -1;
+    for (int i = 1; i <= 2 * reach + 1; ++i) {
+      if (m[i] < search.threshold || m[i] < m[i - 1] || m[i] <= m[i + 1]) continue;
+      if (!search.nearest_only) {
+        peaks->push_back(peak_at(i));
+      } else if (nearest < 0 || std::abs(first + i - minor) < std::abs(first + nearest - minor)) {
+        nearest = i;
+      }
+    }
+    if (nearest >= 0) peaks->push_back(peak_at(nearest));
+  }
+  return searched;
+}
+
+}  // namespace corridor
