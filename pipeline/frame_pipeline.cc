@@ -11,6 +11,7 @@ namespace corridor {
 int64_t FramePipeline::Run(const Source& source, const Sink& sink) {
   BoundedQueue<PipelineFrame> queue(static_cast<size_t>(queue_capacity_));
   std::thread extraction([&] {
+    JunctionTrack track(recoverer_.options().tracker.redetect_interval);
     for (int64_t index = 0;; ++index) {
       PipelineFrame frame;
       if (!source(&frame)) break;
@@ -20,7 +21,7 @@ int64_t FramePipeline::Run(const Source& source, const Sink& sink) {
       } else if (frame.camera == nullptr) {
         frame.result.status = Status::InvalidArgument("frame " + frame.name + " has no camera");
       } else {
-        recoverer_.Detect(frame.image, *frame.camera, &frame.result);
+        recoverer_.Detect(frame.image, *frame.camera, &frame.result, &track);
       }
       if (!queue.Push(std::move(frame))) break;  // The consumer stopped.
     }

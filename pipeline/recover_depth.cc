@@ -111,6 +111,8 @@ bool RecoverDepthOptions::Check(std::string* why) const {
     reason = "search_max_width must be 0 (full resolution) or at least 64 px";
   } else if (!perception.Check(&reason)) {
     reason = "perception: " + reason;
+  } else if (!tracker.Check(&reason)) {
+    reason = "tracker: " + reason;
   } else if (!ceiling.Check(&reason)) {
     reason = "ceiling: " + reason;
   } else if (!end_wall.Check(&reason)) {
@@ -304,17 +306,17 @@ Status DepthRecoverer::Create(const RecoverDepthOptions& options,
 }
 
 Status DepthRecoverer::Recover(const cv::Mat& image, const Camera& camera,
-                               RecoverDepthResult* result,
-                               const CorridorGeometry* previous) const {
+                               RecoverDepthResult* result, const CorridorGeometry* previous,
+                               JunctionTrack* track) const {
   const auto start = Clock::now();
-  Detect(image, camera, result);
+  Detect(image, camera, result, track);
   if (result->ReadyToReconstruct()) Reconstruct(camera, result, previous);
   result->times.total = SecondsSince(start);
   return result->status;
 }
 
 Status DepthRecoverer::Detect(const cv::Mat& image, const Camera& camera,
-                              RecoverDepthResult* result) const {
+                              RecoverDepthResult* result, JunctionTrack* track) const {
   const auto start = Clock::now();
   *result = RecoverDepthResult();
   const auto finish = [&](Status status) {
@@ -330,6 +332,20 @@ Status DepthRecoverer::Detect(const cv::Mat& image, const Camera& camera,
   if (!status.ok()) return finish(status);
   result->image = bgr;
   result->camera = camera;
+  // In a sequence, the junctions near the previous frame's; they stand for the frame when the
+  // track trusts them, else the whole search runs and is checked against them.
+  JunctionPair tracked;
+  const JunctionPair* previous_junctions =
+      track != nullptr && options_.track_junctions ? track->Previous(bgr.size()) : nullptr;
+  const bool has_tracked =
+      previous_junctions != nullptr && TrackJunctions(bgr, *previous_junctions, options_.perception,
+                                                      options_.tracker, &tracked, &why);
+  if (has_tracked && track->Trusted()) {
+    result->junctions = std::move(tracked);
+    result->junctions_tracked = true;
+    track->Tracked(result->junctions, bgr.size());
+    return finish(Status::Ok());
+  }
   // When the junction search halves the image and the ceiling/end-wall searches halve it as far or
   // further, one halving of the whole image serves both: the searches' image is halved from it.
   const int junction_scale = WorkingScale(bgr.cols, options_.perception.max_work_width);
@@ -343,6 +359,11 @@ Status DepthRecoverer::Detect(const cv::Mat& image, const Camera& camera,
     result->search.scale = search_scale;
   } else {
     status = DetectJunctions(bgr, options_.perception, &result->junctions);
+  }
+  if (track != nullptr) {
+    track->Searched(result->junctions, bgr.size(),
+                    has_tracked && SameJunctions(tracked, result->junctions,
+                                                 options_.tracker.agreement_px));
   }
   if (!status.ok()) return finish(status);
   return finish(result->junctions.status);

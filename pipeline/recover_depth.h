@@ -15,6 +15,7 @@
 #include "perception/end_wall_detector.h"
 #include "perception/junction_detector.h"
 #include "perception/junction_lines.h"
+#include "perception/junction_tracker.h"
 #include "perception/working_image.h"
 #include "pipeline/inner_line_check.h"
 
@@ -25,6 +26,8 @@ struct RecoverDepthOptions {
   std::string solver = "joint";            // Solver name or chain (grid, closed_form, lm, joint, ...).
   std::string rasterizer = "exact";        // Rasteriser name: exact or paper.
   JunctionDetectorOptions perception;      // Junction-line detection (paper III-A).
+  bool track_junctions = true;             // In a sequence (Detect given a JunctionTrack), seek each junction near the previous frame's first.
+  JunctionTrackerOptions tracker;          // That tracking's options.
   SolverOptions solver_options;            // Options of every solver.
   RasterizerOptions rasterizer_options;    // Options of every rasteriser.
   int points_per_line = 30;                // N: points sampled along each junction (paper III-B).
@@ -80,6 +83,7 @@ struct RecoverDepthResult {
   bool width_held = false;        // True when the previous frame's width replaced this frame's (max_width_change).
   bool walls_scaled = false;      // True when both walls were scaled to the previous trusted ceiling (max_ceiling_change).
   bool ceiling_held = false;      // True when the previous frame's ceiling height replaced this frame's (max_ceiling_disagreement).
+  bool junctions_tracked = false; // True when the junctions were found near the previous frame's (TrackJunctions), not by a whole search.
   bool ceiling_trusted = false;   // True when the ceiling search found the ceiling and both sides, strong enough to compare, agreed within max_ceiling_disagreement.
 
   // After Detect: both junctions were found, or only one (Reconstruct may then use a known width).
@@ -104,15 +108,19 @@ class DepthRecoverer {
 
   // One frame: 8- or 16-bit, grey, grey+alpha, BGR or BGRA, of the camera's size. The camera
   // must hold a positive mount height. Returns result->status.
-  // Equivalent to Detect followed, when it succeeds, by Reconstruct (with `previous`, which may
-  // be null: the previous frame's geometry in a sequence, see Reconstruct).
+  // Equivalent to Detect (with `track`) followed, when it succeeds, by Reconstruct (with
+  // `previous`); both may be null, see there.
   Status Recover(const cv::Mat& image, const Camera& camera, RecoverDepthResult* result,
-                 const CorridorGeometry* previous = nullptr) const;
+                 const CorridorGeometry* previous = nullptr, JunctionTrack* track = nullptr) const;
 
   // The two halves of Recover, for the paper's two-thread pipeline: Detect checks the inputs and
   // finds the junction lines (the edge-extraction thread); Reconstruct estimates the geometry
   // and rasterises the depth (the depth-recovery thread). Both return result->status.
-  Status Detect(const cv::Mat& image, const Camera& camera, RecoverDepthResult* result) const;
+  // `track` (may be null) is the sequence's junction track: with track_junctions, the junctions
+  // are first sought near its previous frame's (result->junctions_tracked), and the whole search
+  // region is searched only when they are lost; the frame's junctions are recorded in it.
+  Status Detect(const cv::Mat& image, const Camera& camera, RecoverDepthResult* result,
+                JunctionTrack* track = nullptr) const;
   // `previous` (may be null) is the previous frame's geometry in a sequence: when one junction is
   // hidden, its width (and, without a vanishing point, its pitch) stands in; when the two
   // junctions give a much narrower width (max_width_change) that the ceiling's checks leave

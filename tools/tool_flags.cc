@@ -54,6 +54,12 @@ DEFINE_double(baseboard_band_contrast, 1.45,
               "chosen one a baseboard top) when the band between them is this unlike the floor "
               "below, in floor-texture spreads; raise it for glossy floors that mirror the "
               "baseboard; 0 = off");
+DEFINE_bool(track_junctions, true,
+            "In a sequence, seek each junction near the previous frame's first, and search the "
+            "whole region only when it is lost (and every --redetect_interval frames)");
+DEFINE_int32(redetect_interval, 10,
+             "With --track_junctions, search the whole region again after this many tracked "
+             "frames in a row (0 = never once trusted)");
 DEFINE_int32(points_per_line, 30, "Points sampled along each junction line for the solver");
 DEFINE_double(roi_top, 0.5, "Junction search region starts at this fraction of the image height");
 DEFINE_double(hough_angle_window, 15.0,
@@ -76,6 +82,8 @@ Status RecoverDepthOptionsFromFlags(RecoverDepthOptions* options) {
   options->ceiling_height = FLAGS_ceiling_height;
   options->estimate_end_wall = FLAGS_end_wall;
   options->ceiling_checks_inner_lines = FLAGS_inner_line_check;
+  options->track_junctions = FLAGS_track_junctions;
+  options->tracker.redetect_interval = FLAGS_redetect_interval;
   options->width_prior = FLAGS_width_prior;
   options->max_width_change = FLAGS_max_width_change;
   options->max_ceiling_disagreement = FLAGS_max_ceiling_disagreement;

@@ -57,11 +57,13 @@ Status EvaluateScenes(const std::vector<InputScene>& scenes, const DepthRecovere
       if (i >= jobs.size()) return;
       const Job& job = jobs[i];
       SequencePrior prior;
+      JunctionTrack track(recoverer.options().tracker.redetect_interval);
       for (size_t f = job.begin; f < job.end && !stop.load(); ++f) {
         const Status status =
             EvaluateFrame(scenes[job.scene], f, recoverer, frame_options,
                           &(*records)[job.record + f - job.begin],
-                          run_options.sequence ? &prior : nullptr);
+                          run_options.sequence ? &prior : nullptr,
+                          run_options.sequence ? &track : nullptr);
         std::lock_guard<std::mutex> lock(mutex);
         if (!status.ok() && first_error.ok()) {
           first_error = status;

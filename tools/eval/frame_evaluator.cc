@@ -69,7 +69,8 @@ void AccumulateDepthBins(const cv::Mat& pred, const cv::Mat& gt, double max_dept
 }
 
 Status EvaluateFrame(const InputScene& scene, size_t index, const DepthRecoverer& recoverer,
-                     const FrameEvalOptions& options, FrameRecord* record, SequencePrior* prior) {
+                     const FrameEvalOptions& options, FrameRecord* record, SequencePrior* prior,
+                     JunctionTrack* track) {
   const DatasetFrame& frame = scene.frames[index];
   *record = FrameRecord();
   record->scene = scene.name;
@@ -96,9 +97,10 @@ Status EvaluateFrame(const InputScene& scene, size_t index, const DepthRecoverer
   if (status.ok()) {
     record->ran = true;
     status = recoverer.Recover(image, scene.camera, &result,
-                               prior != nullptr ? prior->Previous() : nullptr);
+                               prior != nullptr ? prior->Previous() : nullptr, track);
     if (prior != nullptr) prior->Update(result);
     record->times = result.times;
+    record->junctions_tracked = result.junctions_tracked;
   }
   record->status = status;
   record->has_estimate = status.ok() && result.has_geometry;

@@ -31,6 +31,7 @@ struct FrameRecord {
   CorridorGeometry truth;             // The true geometry (valid when has_truth).
   bool ceiling_visible = false;       // The true ceiling/wall junctions are in view (ceiling_visibility.h).
   bool ceiling_estimated = false;     // The ceiling search found the ceiling (or a sequence held it): estimate.ceiling_height is its height.
+  bool junctions_tracked = false;     // A sequence found the junctions near the previous frame's (RecoverDepthResult::junctions_tracked).
   bool has_depth_truth = false;       // True when the dataset has a ground-truth depth image.
   std::vector<DepthMetrics> metrics;  // One per cap; a failed frame with gt has coverage 0.
   std::vector<DepthBin> depth_bins;   // AbsRel by true depth, 1 m bins up to the largest cap.
@@ -55,10 +56,11 @@ std::string DepthRelativePath(const std::string& scene, const std::string& frame
 // `record`. A frame that fails (unreadable file, no corridor, depth/colour size mismatch) is a
 // record with a non-ok status, not an error. Returns non-ok only when an output cannot be
 // written. With a `prior` (a sequence; may be null) the frame is reconstructed with the previous
-// frame's geometry (hidden junction, held width), and the prior is updated.
+// frame's geometry (hidden junction, held width), and the prior is updated. With a `track` (may
+// be null) the junctions are sought near the previous frame's first (JunctionTrack).
 Status EvaluateFrame(const InputScene& scene, size_t index, const DepthRecoverer& recoverer,
                      const FrameEvalOptions& options, FrameRecord* record,
-                     SequencePrior* prior = nullptr);
+                     SequencePrior* prior = nullptr, JunctionTrack* track = nullptr);
 
 // Adds the AbsRel of pred against gt in 1 m bins of gt, for gt in (0, max_depth], to `bins`
 // (resized to ceil(max_depth) bins when smaller). Uses ComputeDepthMetrics per bin.

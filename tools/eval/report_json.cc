@@ -125,6 +125,7 @@ std::string Frame(const FrameRecord& f, const std::vector<double>& caps) {
                                   ? RelativeError(f.estimate.width, f.truth.width)
                                   : kUnknown);
   o.Bool("ceiling_visible", f.ceiling_visible).Bool("ceiling_estimated", f.ceiling_estimated);
+  o.Bool("junctions_tracked", f.junctions_tracked);
   for (size_t c = 0; c < caps.size() && c < f.metrics.size(); ++c) {
     o.Add(CapKey(caps[c]), Metrics(f.metrics[c]));
   }

@@ -96,7 +96,7 @@ std::string ReportCsv(const std::vector<EvalReport>& configs) {
                                      "reason",     "est_yaw",        "est_pitch",  "est_offset",
                                      "est_width",  "true_yaw",       "true_pitch", "true_offset",
                                      "true_width", "width_rel_error", "est_ceiling_height",
-                                     "true_ceiling_height", "ceiling_visible"};
+                                     "true_ceiling_height", "ceiling_visible", "junctions_tracked"};
   const std::vector<double> caps = configs.empty() ? std::vector<double>() : configs[0].caps;
   for (double cap : caps) {
     for (const char* name : kMetricNames) header.push_back(CapKey(cap) + "_" + name);
@@ -120,6 +120,7 @@ std::string ReportCsv(const std::vector<EvalReport>& configs) {
       row.push_back(f.ceiling_estimated ? CsvNumber(f.estimate.ceiling_height) : "");
       row.push_back(f.has_truth && f.truth.HasCeiling() ? CsvNumber(f.truth.ceiling_height) : "");
       row.push_back(f.has_truth ? (f.ceiling_visible ? "1" : "0") : "");
+      row.push_back(f.junctions_tracked ? "1" : "0");
       for (size_t c = 0; c < caps.size(); ++c) {
         const DepthMetrics m = c < f.metrics.size() ? f.metrics[c] : DepthMetrics();
         const bool known = c < f.metrics.size();

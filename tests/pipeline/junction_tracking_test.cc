@@ -1,0 +1,129 @@
+// Junction tracking in a sequence (RecoverDepthOptions::track_junctions): on a rendered drive the
+// frames whose junctions were tracked from the previous frame's are as close to the generator's
+// true width as the whole search's; a frame far from the previous one is searched whole; the
+// two-thread FramePipeline tracks too; a bad tracker option is named.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <vector>
+
+#include "perception/junction_tracker.h"
+#include "pipeline/frame_pipeline.h"
+#include "pipeline/recover_depth.h"
+#include "pipeline/sequence_prior.h"
+#include "tests/support/corridor_frame.h"
+
+namespace corridor {
+namespace {
+
+constexpr int kFrames = 10;
+
+class JunctionTrackingTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    camera_ = Camera::FromHorizontalFov(640, 480, 80.0 * M_PI / 180, 0.66);
+    for (int i = 0; i < kFrames; ++i) {
+      const synth::CameraPose pose{0.03 + 0.01 * std::sin(0.7 * i), 0.05, 0.1 + 0.04 * std::sin(0.5 * i),
+                                   0.66, 3.0 + 0.3 * i};
+      frames_.push_back(testing_util::RenderCorridorFrame(camera_, 2.2, 2.7, 11, pose, 0.0));
+    }
+  }
+
+  // Runs the drive as a sequence; returns the frames whose junctions were tracked.
+  int RunDrive(bool track_junctions, std::vector<double>* width_errors) const {
+    RecoverDepthOptions options;
+    options.track_junctions = track_junctions;
+    std::unique_ptr<DepthRecoverer> recoverer;
+    EXPECT_TRUE(DepthRecoverer::Create(options, &recoverer).ok());
+    SequencePrior prior;
+    JunctionTrack track(options.tracker.redetect_interval);
+    int tracked = 0;
+    for (const synth::Frame& frame : frames_) {
+      RecoverDepthResult result;
+      const Status status =
+          recoverer->Recover(frame.bgr, camera_, &result, prior.Previous(), &track);
+      EXPECT_TRUE(status.ok()) << status.ToString();
+      prior.Update(result);
+      tracked += result.junctions_tracked;
+      width_errors->push_back(std::abs(result.geometry.width / frame.truth.width - 1));
+    }
+    return tracked;
+  }
+
+  static Camera camera_;
+  static std::vector<synth::Frame> frames_;
+};
+
+Camera JunctionTrackingTest::camera_;
+std::vector<synth::Frame> JunctionTrackingTest::frames_;
+
+TEST_F(JunctionTrackingTest, TrackedFramesAreAsCloseToTheTrueWidth) {
+  std::vector<double> searched_errors, tracked_errors;
+  EXPECT_EQ(RunDrive(false, &searched_errors), 0);
+  const int tracked = RunDrive(true, &tracked_errors);
+  // Frames 0 and 1 are searched whole (the second one's search agrees with its tracked pair);
+  // frames 2 on may be tracked.
+  EXPECT_GE(tracked, kFrames - 4);
+  EXPECT_LE(tracked, kFrames - 2);
+  for (int i = 0; i < kFrames; ++i) {
+    EXPECT_LT(searched_errors[i], 0.02) << "frame " << i;
+    EXPECT_LT(tracked_errors[i], 0.02) << "frame " << i;
+  }
+}
+
+TEST_F(JunctionTrackingTest, AFrameFarFromThePreviousOneIsSearchedWhole) {
+  std::unique_ptr<DepthRecoverer> recoverer;
+  ASSERT_TRUE(DepthRecoverer::Create(RecoverDepthOptions(), &recoverer).ok());
+  JunctionTrack track(RecoverDepthOptions().tracker.redetect_interval);
+  RecoverDepthResult result;
+  for (int i = 0; i < 3; ++i) {
+    ASSERT_TRUE(recoverer->Recover(frames_[i].bgr, camera_, &result, nullptr, &track).ok());
+  }
+  ASSERT_TRUE(result.junctions_tracked) << "premise: the track is trusted by frame 2";
+  // The camera turned and moved aside: the previous lines are far from this frame's.
+  const synth::Frame moved = testing_util::RenderCorridorFrame(
+      camera_, 2.2, 2.7, 11, synth::CameraPose{-0.08, 0.05, -0.35, 0.66, 4.0}, 0.0);
+  ASSERT_TRUE(recoverer->Recover(moved.bgr, camera_, &result, nullptr, &track).ok());
+  EXPECT_FALSE(result.junctions_tracked);
+  EXPECT_LT(std::abs(result.geometry.width / moved.truth.width - 1), 0.02);
+}
+
+TEST_F(JunctionTrackingTest, TheTwoThreadPipelineTracks) {
+  std::unique_ptr<DepthRecoverer> recoverer;
+  ASSERT_TRUE(DepthRecoverer::Create(RecoverDepthOptions(), &recoverer).ok());
+  FramePipeline pipeline(*recoverer, 2);
+  int next = 0, tracked = 0, delivered = 0;
+  pipeline.Run(
+      [&](PipelineFrame* frame) {
+        if (next >= kFrames) return false;
+        frame->name = std::to_string(next);
+        frame->camera = &camera_;
+        frame->image = frames_[next++].bgr;
+        return true;
+      },
+      [&](PipelineFrame&& frame) {
+        EXPECT_TRUE(frame.result.status.ok()) << frame.result.status.ToString();
+        EXPECT_EQ(frame.index, delivered);
+        tracked += frame.result.junctions_tracked;
+        EXPECT_LT(std::abs(frame.result.geometry.width / frames_[delivered].truth.width - 1), 0.02)
+            << "frame " << delivered;
+        ++delivered;
+        return true;
+      });
+  EXPECT_EQ(delivered, kFrames);
+  EXPECT_GE(tracked, kFrames - 4);
+}
+
+TEST(JunctionTrackingOptionsTest, ABadTrackerOptionIsNamed) {
+  RecoverDepthOptions options;
+  options.tracker.reach_fraction = 0.5;
+  std::unique_ptr<DepthRecoverer> recoverer;
+  const Status status = DepthRecoverer::Create(options, &recoverer);
+  EXPECT_FALSE(status.ok());
+  EXPECT_NE(status.ToString().find("tracker: reach_fraction"), std::string::npos)
+      << status.ToString();
+}
+
+}  // namespace
+}  // namespace corridor
