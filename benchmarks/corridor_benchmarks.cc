@@ -4,7 +4,13 @@
 //   best   the fastest accurate configuration: closed_form+lm and the exact rasteriser, with the
 //          default ceiling and end-wall searches;
 //   floor  the least work any method must do: one Canny over the lower half and one depth image;
-// plus best_joint (the joint solver with the exact rasteriser), the runner-up for `best`.
+// plus best_joint (the joint solver with the exact rasteriser), the runner-up for `best`, and
+//   best_sequence  `best` on a drive (frames 0-15 of PaperLikePose and back, over and over) as a
+//                  sequence runs it (the previous frame's geometry passed on), every frame's
+//                  junctions searched in the whole region;
+//   best_tracked   the same with the junctions tracked from the previous frame's, the whole
+//                  region searched again every redetect_interval frames and when a track is lost.
+// The drives' times are means over the drive's frames, whole searches included.
 // Frames are rendered once, outside the timing loops; OpenCV runs on one thread, so each figure
 // is the cost on one core. scripts/run_benchmarks.sh runs this binary and prints the table.
 //   build/benchmarks/corridor_benchmarks --benchmark_repetitions=5 --benchmark_out=e2e.json
@@ -18,7 +24,9 @@
 #include <opencv2/imgproc.hpp>
 
 #include "benchmarks/bench_frames.h"
+#include "perception/junction_tracker.h"
 #include "pipeline/recover_depth.h"
+#include "pipeline/sequence_prior.h"
 
 namespace corridor {
 namespace {
@@ -60,6 +68,53 @@ void EndToEnd(benchmark::State& state, const std::string& solver, const std::str
   state.counters["pitch_error_mrad"] = 1000 * std::abs(result.geometry.pitch - truth.pitch);
 }
 
+// `best` on a drive, frame after frame, as a sequence is run (SequencePrior; JunctionTrack when
+// `tracking`).
+void EndToEndDrive(benchmark::State& state, bool tracking, int width, int height) {
+  cv::setNumThreads(1);
+  constexpr int kDriveFrames = 16;
+  std::vector<const bench::BenchFrame*> drive;  // 0 .. 15 .. 1: the drive there and back.
+  for (int i = 0; i < kDriveFrames; ++i) drive.push_back(&bench::PaperLikeFrame(width, height, i));
+  for (int i = kDriveFrames - 2; i > 0; --i) drive.push_back(drive[i]);
+  RecoverDepthOptions options;
+  options.solver = "closed_form+lm";
+  options.rasterizer = "exact";
+  options.track_junctions = tracking;
+  std::unique_ptr<DepthRecoverer> recoverer;
+  if (!DepthRecoverer::Create(options, &recoverer).ok()) {
+    state.SkipWithError("cannot create the recoverer");
+    return;
+  }
+  const Camera& camera = drive[0]->camera;
+  RecoverDepthResult result;
+  if (recoverer->Detect(drive[0]->frame.bgr, camera, &result).ok()) {
+    recoverer->Reconstruct(camera, &result);  // Warm-up, outside callgrind's toggle (see above).
+  }
+  SequencePrior prior;
+  JunctionTrack track(options.tracker.redetect_interval);
+  size_t next = 0;
+  int64_t frames = 0, tracked = 0, failed = 0;
+  double worst_width_error = 0;
+  for (auto _ : state) {
+    const bench::BenchFrame& input = *drive[next];
+    next = (next + 1) % drive.size();
+    recoverer->Recover(input.frame.bgr, camera, &result, prior.Previous(), &track);
+    prior.Update(result);
+    benchmark::DoNotOptimize(result.depth.data);
+    ++frames;
+    tracked += result.junctions_tracked;
+    if (!result.status.ok()) {
+      ++failed;
+    } else {
+      worst_width_error =
+          std::max(worst_width_error, std::abs(result.geometry.width - input.frame.truth.width));
+    }
+  }
+  state.counters["tracked_fraction"] = frames > 0 ? static_cast<double>(tracked) / frames : 0;
+  state.counters["failed_frames"] = static_cast<double>(failed);
+  state.counters["worst_width_error_mm"] = 1000 * worst_width_error;
+}
+
 // The floor: what every method must at least do per frame.
 void Floor(benchmark::State& state, int width, int height) {
   cv::setNumThreads(1);
@@ -83,6 +138,12 @@ const bool registered = [] {
         ->Unit(benchmark::kMicrosecond);
     benchmark::RegisterBenchmark(("EndToEnd/best" + suffix).c_str(), EndToEnd, "closed_form+lm",
                                  "exact", false, w, h)
+        ->Unit(benchmark::kMicrosecond);
+    benchmark::RegisterBenchmark(("EndToEnd/best_sequence" + suffix).c_str(), EndToEndDrive,
+                                 false, w, h)
+        ->Unit(benchmark::kMicrosecond);
+    benchmark::RegisterBenchmark(("EndToEnd/best_tracked" + suffix).c_str(), EndToEndDrive, true,
+                                 w, h)
         ->Unit(benchmark::kMicrosecond);
     benchmark::RegisterBenchmark(("EndToEnd/floor" + suffix).c_str(), Floor, w, h)
         ->Unit(benchmark::kMicrosecond);

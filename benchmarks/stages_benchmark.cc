@@ -25,6 +25,7 @@
 #include "perception/ceiling_detector.h"
 #include "perception/color_gradient.h"
 #include "perception/end_wall_detector.h"
+#include "perception/junction_tracker.h"
 #include "perception/line_segments.h"
 #include "pipeline/inner_line_check.h"
 #include "pipeline/recover_depth.h"
@@ -42,6 +43,27 @@ void Detect(benchmark::State& state, int width, int height) {
     benchmark::DoNotOptimize(status);
   }
   if (!pair.status.ok()) state.SkipWithError(pair.status.ToString().c_str());
+}
+
+// The junctions of the drive's frame 1 sought near frame 0's (TrackJunctions), as a sequence does
+// between whole searches.
+void Track(benchmark::State& state, int width, int height) {
+  cv::setNumThreads(1);
+  const JunctionDetectorOptions options;
+  JunctionPair previous;
+  if (!DetectJunctions(bench::PaperLikeFrame(width, height, 0).frame.bgr, options, &previous).ok()) {
+    state.SkipWithError("no junctions in frame 0");
+    return;
+  }
+  const cv::Mat& next = bench::PaperLikeFrame(width, height, 1).frame.bgr;
+  const JunctionTrackerOptions tracker;
+  JunctionPair tracked;
+  bool found = false;
+  for (auto _ : state) {
+    found = TrackJunctions(next, previous, options, tracker, &tracked, nullptr);
+    benchmark::DoNotOptimize(found);
+  }
+  if (!found) state.SkipWithError("frame 1's junctions not tracked");
 }
 
 void Segments(benchmark::State& state, int width, int height) {
@@ -199,6 +221,8 @@ const bool registered = [] {
     const int w = size[0], h = size[1];
     const std::string suffix = "/" + bench::SizeName(w, h);
     benchmark::RegisterBenchmark(("Stages/detect" + suffix).c_str(), Detect, w, h)
+        ->Unit(benchmark::kMicrosecond);
+    benchmark::RegisterBenchmark(("Stages/track" + suffix).c_str(), Track, w, h)
         ->Unit(benchmark::kMicrosecond);
     benchmark::RegisterBenchmark(("Stages/segments" + suffix).c_str(), Segments, w, h)
         ->Unit(benchmark::kMicrosecond);
