@@ -17,12 +17,12 @@
 namespace corridor {
 namespace {
 
-constexpr int kFrames = 10;
+constexpr int kFrames = 8;
 
 class JunctionTrackingTest : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    camera_ = Camera::FromHorizontalFov(640, 480, 80.0 * M_PI / 180, 0.66);
+    camera_ = Camera::FromHorizontalFov(480, 360, 80.0 * M_PI / 180, 0.66);
     for (int i = 0; i < kFrames; ++i) {
       const synth::CameraPose pose{0.03 + 0.01 * std::sin(0.7 * i), 0.05, 0.1 + 0.04 * std::sin(0.5 * i),
                                    0.66, 3.0 + 0.3 * i};
