@@ -1,6 +1,6 @@
 // Sustained frames per second through the paper's two-thread FramePipeline against a one-thread
-// loop (Detect then Reconstruct per frame), the library default configuration, OpenCV on one
-// thread per stage:
+// loop (Detect then Reconstruct per frame, with the junction track and the previous geometry as
+// the pipeline keeps them), the library default configuration, OpenCV on one thread per stage:
 //   Pipeline/<two_threads|one_thread>/memory    200 frames cycled from 16 rendered 640x480 ones
 //   Pipeline/<two_threads|one_thread>/dataset   every frame of $CORRIDOR_BENCH_DATASET (a dataset
 //                                               root; its images are read inside the loop, as
@@ -16,7 +16,9 @@
 #include "benchmarks/bench_frames.h"
 #include "io/dataset.h"
 #include "io/image_io.h"
+#include "perception/junction_tracker.h"
 #include "pipeline/frame_pipeline.h"
+#include "pipeline/sequence_prior.h"
 
 namespace corridor {
 namespace {
@@ -48,12 +50,19 @@ void Run(benchmark::State& state, bool two_threads, int frames, const FrameSourc
             return true;
           });
     } else {
+      JunctionTrack track(recoverer->options().tracker.redetect_interval);
+      SequencePrior prior;
       for (int i = 0; i < frames; ++i) {
         PipelineFrame frame;
         fill(i, &frame);
-        if (frame.read_status.ok() &&
-            recoverer->Detect(frame.image, *frame.camera, &frame.result).ok()) {
-          recoverer->Reconstruct(*frame.camera, &frame.result);
+        if (frame.read_status.ok()) {
+          recoverer->Detect(frame.image, *frame.camera, &frame.result, &track);
+        } else {
+          frame.result.status = frame.read_status;
+        }
+        if (frame.result.ReadyToReconstruct()) {
+          recoverer->Reconstruct(*frame.camera, &frame.result, prior.Previous());
+          prior.Update(frame.result);
         }
         failed += !frame.result.status.ok();
       }
