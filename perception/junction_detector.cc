@@ -38,18 +38,6 @@ void KeepWhere(const std::vector<Eigen::Vector2d>& from, Keep keep,
   to->resize(kept);
 }
 
-// Edge pixels of the ROI (full-image coordinates) on the floor side of the vanishing point (left
-// or right of it, and below it), in the edge map's order.
-std::vector<Eigen::Vector2d> FloorSidePixels(const std::vector<Eigen::Vector2d>& edges,
-                                             const Eigen::Vector2d& vp, bool left) {
-  std::vector<Eigen::Vector2d> side;
-  KeepWhere(edges, [&](const Eigen::Vector2d& p) {
-    const bool beyond = left ? p.x() > vp.x() : p.x() < vp.x();
-    return !beyond & !(p.y() < vp.y());
-  }, &side);
-  return side;
-}
-
 // The pixels of `side` within `distance` of the line, in order.
 void SupportPixels(const std::vector<Eigen::Vector2d>& side, const Eigen::Vector3d& line,
                    double distance, std::vector<Eigen::Vector2d>* support) {
@@ -193,6 +181,16 @@ Status NoCorridor(JunctionPair* result, const std::string& why) {
 }
 
 }  // namespace
+
+std::vector<Eigen::Vector2d> FloorSidePixels(const std::vector<Eigen::Vector2d>& edges,
+                                             const Eigen::Vector2d& vp, bool left) {
+  std::vector<Eigen::Vector2d> side;
+  KeepWhere(edges, [&](const Eigen::Vector2d& p) {
+    const bool beyond = left ? p.x() > vp.x() : p.x() < vp.x();
+    return !beyond & !(p.y() < vp.y());
+  }, &side);
+  return side;
+}
 
 bool JunctionDetectorOptions::Check(std::string* why) const {
   std::string reason;

@@ -1,6 +1,9 @@
 #pragma once
 
 #include <string>
+#include <vector>
+
+#include <Eigen/Core>
 
 #include <opencv2/core.hpp>
 
@@ -58,5 +61,10 @@ Status DetectJunctions(const cv::Mat& bgr, const JunctionDetectorOptions& option
 // rows come out the same. InvalidArgument when `halved` is not that image's size or type.
 Status DetectJunctions(const cv::Mat& bgr, const cv::Mat& halved,
                        const JunctionDetectorOptions& options, JunctionPair* result);
+
+// The points of `edges` on a junction's floor side of the vanishing point `vp` (`left`: the left
+// junction's, left of vp; else right of it; and not above it), in order: a junction's support.
+std::vector<Eigen::Vector2d> FloorSidePixels(const std::vector<Eigen::Vector2d>& edges,
+                                             const Eigen::Vector2d& vp, bool left);
 
 }  // namespace corridor

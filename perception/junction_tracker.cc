@@ -9,6 +9,7 @@
 #include "perception/appearance.h"
 #include "perception/junction_selector.h"
 #include "perception/line_edge_points.h"
+#include "perception/line_segments.h"
 #include "perception/robust_line_fit.h"
 #include "perception/working_image.h"
 
@@ -141,17 +142,10 @@ bool FitCandidate(const std::vector<Eigen::Vector2d>& points, double support_dis
   JunctionLine& junction = candidate->junction;
   junction.line = line;
   SetSupport(std::move(support), step_px, &junction);
-  const Eigen::Vector2d a = junction.near_end, b = junction.far_end;
-  const Eigen::Vector2d direction(line.y(), -line.x());
   MergedLine& merged = candidate->merged;
   merged.line = line;
-  merged.start = a.x() <= b.x() ? a : b;
-  merged.end = a.x() <= b.x() ? b : a;
-  merged.length = (a - b).norm();
+  SetExtentAlongLine({junction.near_end, junction.far_end}, &merged);
   merged.covered = junction.support_length;
-  merged.slope = std::abs(line.y()) > 1e-12 ? -line.x() / line.y() : -1e12 * line.x();
-  merged.inclination_deg =
-      std::atan2(std::abs(direction.y()), std::abs(direction.x())) * 180.0 / M_PI;
   return true;
 }
 
@@ -350,12 +344,7 @@ bool TrackJunctions(const cv::Mat& bgr, const JunctionPair& previous,
       std::abs(vp.z()) > 1e-12 ? Eigen::Vector2d(vp.head<2>() / vp.z()) : pair.vanishing_point;
   // Only the support on the floor's side of the vanishing point counts, as in the detector.
   const auto floor_side = [&](JunctionLine* line, bool left) {
-    std::vector<Eigen::Vector2d> kept;
-    for (const auto& p : line->support) {
-      const bool beyond = left ? p.x() > result.vanishing_point.x()
-                               : p.x() < result.vanishing_point.x();
-      if (!beyond && p.y() >= result.vanishing_point.y()) kept.push_back(p);
-    }
+    std::vector<Eigen::Vector2d> kept = FloorSidePixels(line->support, result.vanishing_point, left);
     if (kept.size() < 8) return false;
     if (kept.size() < line->support.size()) {
       SetSupport(std::move(kept), scale * options.sample_step, line);

@@ -22,8 +22,9 @@ Eigen::Vector3d Normalise(Eigen::Vector3d line) {
   return line;
 }
 
-// Fills extent, slope and inclination of `m` from the points projected onto its line.
-void SetExtent(const std::vector<Eigen::Vector2d>& points, MergedLine* m) {
+}  // namespace
+
+void SetExtentAlongLine(const std::vector<Eigen::Vector2d>& points, MergedLine* m) {
   const Eigen::Vector2d direction(m->line.y(), -m->line.x());  // Along the line, u increasing.
   const Eigen::Vector2d origin = -m->line.z() * m->line.head<2>();
   double lo = 1e300, hi = -1e300;
@@ -39,8 +40,6 @@ void SetExtent(const std::vector<Eigen::Vector2d>& points, MergedLine* m) {
   m->slope = std::abs(du) > 1e-12 ? dv / du : (dv > 0 ? 1e12 : -1e12);
   m->inclination_deg = std::atan2(std::abs(dv), std::abs(du)) * 180.0 / M_PI;
 }
-
-}  // namespace
 
 EdgeSegments DetectSegments(const cv::Mat& image, int roi_top, const SegmentOptions& options) {
   EdgeSegments out;
@@ -88,7 +87,7 @@ EdgeSegments DetectSegments(const cv::Mat& image, int roi_top, const SegmentOpti
 MergedLine LineThrough(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
   MergedLine m;
   m.line = Normalise(Eigen::Vector3d(a.x(), a.y(), 1).cross(Eigen::Vector3d(b.x(), b.y(), 1)));
-  SetExtent({a, b}, &m);
+  SetExtentAlongLine({a, b}, &m);
   m.covered = m.length;
   return m;
 }
@@ -147,7 +146,7 @@ std::vector<MergedLine> MergeSegments(const std::vector<cv::Vec4f>& segments, do
     MergedLine& m = merged[group];
     m.line = Normalise(Eigen::Vector3d(normal.x(), normal.y(), -normal.dot(mean)));
     const double covered = m.covered + candidate.length;
-    SetExtent(members[group], &m);
+    SetExtentAlongLine(members[group], &m);
     m.covered = std::min(covered, m.length);
   }
   return merged;

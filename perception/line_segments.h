@@ -19,6 +19,10 @@ struct MergedLine {
   double inclination_deg = 0; // Angle from the horizontal, in [0, 90].
 };
 
+// Fills m's start, end, length, slope and inclination from `points` projected onto m->line (which
+// must be set, with b >= 0).
+void SetExtentAlongLine(const std::vector<Eigen::Vector2d>& points, MergedLine* m);
+
 // Canny edges (in the ROI rows [roi_top, rows)) and their Hough segments in full-image coordinates.
 struct EdgeSegments {
   cv::Mat edges;                   // CV_8U edge map of the ROI (255 = edge).
