@@ -91,7 +91,7 @@ void EndToEndDrive(benchmark::State& state, bool tracking, int width, int height
     recoverer->Reconstruct(camera, &result);  // Warm-up, outside callgrind's toggle (see above).
   }
   SequencePrior prior;
-  JunctionTrack track(options.tracker.redetect_interval);
+  JunctionTrack track;
   size_t next = 0;
   int64_t frames = 0, tracked = 0, failed = 0;
   double worst_width_error = 0;

@@ -50,7 +50,7 @@ void Run(benchmark::State& state, bool two_threads, int frames, const FrameSourc
             return true;
           });
     } else {
-      JunctionTrack track(recoverer->options().tracker.redetect_interval);
+      JunctionTrack track;
       SequencePrior prior;
       for (int i = 0; i < frames; ++i) {
         PipelineFrame frame;

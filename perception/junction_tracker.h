@@ -52,20 +52,20 @@ bool SameJunctions(const JunctionPair& a, const JunctionPair& b, double toleranc
 // whether a tracked pair may stand for a frame. A pair tracked from a wrong pair is as wrong, so
 // tracking is trusted only once a whole search found the lines it tracked to (the search of a
 // frame agreed with the pair tracked into it), and for redetect_interval frames after that; then
-// the next frame is searched whole again, and checked against its tracked pair.
+// the next frame is searched whole again, and checked against its tracked pair. The interval is
+// the recoverer's option (JunctionTrackerOptions::redetect_interval), passed where it is asked.
 class JunctionTrack {
  public:
-  explicit JunctionTrack(int redetect_interval) : redetect_interval_(redetect_interval) {}
-
   // The previous frame's junctions when that frame was of `size`; null otherwise (or none).
   const JunctionPair* Previous(const cv::Size& size) const {
     return has_previous_ && size == size_ ? &previous_ : nullptr;
   }
 
-  // True when a pair tracked into the next frame may stand for it (see the class comment).
-  bool Trusted() const {
+  // True when a pair tracked into the next frame may stand for it (see the class comment), after
+  // at most `redetect_interval` tracked frames in a row (0 = any number).
+  bool Trusted(int redetect_interval) const {
     return has_previous_ && agreed_ &&
-           (redetect_interval_ == 0 || tracked_in_a_row_ < redetect_interval_);
+           (redetect_interval == 0 || tracked_in_a_row_ < redetect_interval);
   }
 
   // Records a frame of `size` whose junctions were tracked.
@@ -78,7 +78,6 @@ class JunctionTrack {
  private:
   void Keep(const JunctionPair& junctions, const cv::Size& size);
 
-  const int redetect_interval_;
   JunctionPair previous_;
   cv::Size size_;
   bool has_previous_ = false;

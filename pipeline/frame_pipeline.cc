@@ -11,7 +11,7 @@ namespace corridor {
 int64_t FramePipeline::Run(const Source& source, const Sink& sink) {
   BoundedQueue<PipelineFrame> queue(static_cast<size_t>(queue_capacity_));
   std::thread extraction([&] {
-    JunctionTrack track(recoverer_.options().tracker.redetect_interval);
+    JunctionTrack track;
     for (int64_t index = 0;; ++index) {
       PipelineFrame frame;
       if (!source(&frame)) break;

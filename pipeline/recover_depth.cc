@@ -340,7 +340,7 @@ Status DepthRecoverer::Detect(const cv::Mat& image, const Camera& camera,
   const bool has_tracked =
       previous_junctions != nullptr && TrackJunctions(bgr, *previous_junctions, options_.perception,
                                                       options_.tracker, &tracked, &why);
-  if (has_tracked && track->Trusted()) {
+  if (has_tracked && track->Trusted(options_.tracker.redetect_interval)) {
     result->junctions = std::move(tracked);
     result->junctions_tracked = true;
     track->Tracked(result->junctions, bgr.size());

@@ -190,31 +190,31 @@ TEST(SameJunctionsTest, LinesWithinTheToleranceAtBothEndsAreTheSame) {
 TEST(JunctionTrackTest, TrustFollowsTheWholeSearchesAgreementAndTheInterval) {
   const JunctionPair pair = PairThrough({0, 400}, {300, 250}, {640, 420}, {340, 250});
   const cv::Size size(640, 480);
-  JunctionTrack track(2);
+  JunctionTrack track;
   EXPECT_EQ(track.Previous(size), nullptr);
-  EXPECT_FALSE(track.Trusted());
+  EXPECT_FALSE(track.Trusted(2));
   track.Searched(pair, size, false);  // The first frame: nothing tracked into it.
   ASSERT_NE(track.Previous(size), nullptr);
   EXPECT_EQ(track.Previous(cv::Size(320, 240)), nullptr);  // Another size: no previous lines.
-  EXPECT_FALSE(track.Trusted());
+  EXPECT_FALSE(track.Trusted(2));
   track.Searched(pair, size, true);  // A whole search agreed with its tracked pair.
-  EXPECT_TRUE(track.Trusted());
+  EXPECT_TRUE(track.Trusted(2));
   track.Tracked(pair, size);
-  EXPECT_TRUE(track.Trusted());
+  EXPECT_TRUE(track.Trusted(2));
   track.Tracked(pair, size);
-  EXPECT_FALSE(track.Trusted());  // Two tracked frames in a row: the next is searched whole.
+  EXPECT_FALSE(track.Trusted(2));  // Two tracked frames in a row: the next is searched whole.
   track.Searched(pair, size, false);  // ... and disagreed.
-  EXPECT_FALSE(track.Trusted());
+  EXPECT_FALSE(track.Trusted(2));
   JunctionPair lost;
   lost.status = Status::NoCorridorFound("none");
   track.Searched(lost, size, false);
   EXPECT_EQ(track.Previous(size), nullptr);
-  EXPECT_FALSE(track.Trusted());
+  EXPECT_FALSE(track.Trusted(2));
 
-  JunctionTrack forever(0);  // Never searched whole again once trusted.
+  JunctionTrack forever;  // Interval 0: never searched whole again once trusted.
   forever.Searched(pair, size, true);
   for (int i = 0; i < 50; ++i) forever.Tracked(pair, size);
-  EXPECT_TRUE(forever.Trusted());
+  EXPECT_TRUE(forever.Trusted(0));
 }
 
 }  // namespace

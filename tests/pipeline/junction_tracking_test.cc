@@ -37,7 +37,7 @@ class JunctionTrackingTest : public ::testing::Test {
     std::unique_ptr<DepthRecoverer> recoverer;
     EXPECT_TRUE(DepthRecoverer::Create(options, &recoverer).ok());
     SequencePrior prior;
-    JunctionTrack track(options.tracker.redetect_interval);
+    JunctionTrack track;
     int tracked = 0;
     for (const synth::Frame& frame : frames_) {
       RecoverDepthResult result;
@@ -75,7 +75,7 @@ TEST_F(JunctionTrackingTest, TrackedFramesAreAsCloseToTheTrueWidth) {
 TEST_F(JunctionTrackingTest, AFrameFarFromThePreviousOneIsSearchedWhole) {
   std::unique_ptr<DepthRecoverer> recoverer;
   ASSERT_TRUE(DepthRecoverer::Create(RecoverDepthOptions(), &recoverer).ok());
-  JunctionTrack track(RecoverDepthOptions().tracker.redetect_interval);
+  JunctionTrack track;
   RecoverDepthResult result;
   for (int i = 0; i < 3; ++i) {
     ASSERT_TRUE(recoverer->Recover(frames_[i].bgr, camera_, &result, nullptr, &track).ok());

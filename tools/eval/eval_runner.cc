@@ -57,7 +57,7 @@ Status EvaluateScenes(const std::vector<InputScene>& scenes, const DepthRecovere
       if (i >= jobs.size()) return;
       const Job& job = jobs[i];
       SequencePrior prior;
-      JunctionTrack track(recoverer.options().tracker.redetect_interval);
+      JunctionTrack track;
       for (size_t f = job.begin; f < job.end && !stop.load(); ++f) {
         const Status status =
             EvaluateFrame(scenes[job.scene], f, recoverer, frame_options,
