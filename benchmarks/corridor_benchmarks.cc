@@ -4,7 +4,9 @@
 //   best   the fastest accurate configuration: closed_form+lm and the exact rasteriser, with the
 //          default ceiling and end-wall searches;
 //   floor  the least work any method must do: one Canny over the lower half and one depth image;
-// plus best_joint (the joint solver with the exact rasteriser), the runner-up for `best`, and
+// plus best_joint (the joint solver with the exact rasteriser), the runner-up for `best`,
+//   best_paper_scope  `best`'s solver and rasteriser on the paper's scope (floor and walls: no
+//                  ceiling or end-wall search, as `paper`), to compare with `paper` like for like,
 //   best_sequence  `best` on a drive (frames 0-15 of PaperLikePose and back, over and over) as a
 //                  sequence runs it (the previous frame's geometry passed on), every frame's
 //                  junctions searched in the whole region;
@@ -149,6 +151,9 @@ const bool registered = [] {
         ->Unit(benchmark::kMicrosecond);
     benchmark::RegisterBenchmark(("EndToEnd/best_joint" + suffix).c_str(), EndToEnd, "joint",
                                  "exact", false, w, h)
+        ->Unit(benchmark::kMicrosecond);
+    benchmark::RegisterBenchmark(("EndToEnd/best_paper_scope" + suffix).c_str(), EndToEnd,
+                                 "closed_form+lm", "exact", true, w, h)
         ->Unit(benchmark::kMicrosecond);
   }
   return true;
