@@ -8,7 +8,7 @@ PACKAGES=(
   libeigen3-dev libceres-dev libopencv-dev libgoogle-glog-dev libgflags-dev libyaml-cpp-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   librosbag-storage-dev libsensor-msgs-dev python3-rosbag python3-sensor-msgs
-  python3-pil
+  python3 python3-pil
 )
 
 missing=()
