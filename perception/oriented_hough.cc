@@ -29,7 +29,10 @@ enum PixelState : uint8_t {
 
 // The (angle, rho) vote counts, reused by the calls of one thread and emptied at the end of
 // each: allocating and first touching 0.6 MB (at 640x240) per call cost a third of the voting;
-// clearing it costs less than taking every vote back.
+// clearing it costs less than taking every vote back. Each angle's row holds only the rhos the
+// map's pixels reach at that angle (from its corners, where rho = u cos + v sin is extreme): 0.2
+// MB at 640x240 rather than 0.6 MB for every angle's full -(w + h) .. w + h, so that the votes'
+// scattered bins stay in a core's L2 cache.
 class Accumulator {
  public:
   Accumulator() {
@@ -44,11 +47,27 @@ class Accumulator {
   // leaves it empty) and sets the voting window, bins on each side.
   void Reset(int width, int height, int window) {
     window_ = window;
-    if (offset_ != width + height) {
-      offset_ = width + height;
-      rhos_ = 2 * offset_ + 1;
-      votes_.assign(static_cast<size_t>(kAngles) * rhos_, 0);
-      for (int i = 0; i < 3 * kAngles; ++i) row_[i] = (i % kAngles) * rhos_ + offset_;
+    if (width_ != width || height_ != height) {
+      width_ = width;
+      height_ = height;
+      int rows_start[kAngles];
+      int total = 0;
+      for (int n = 0; n < kAngles; ++n) {
+        // Cells computes cvRound(u cos + v sin) in float: the corners bound it, give or take the
+        // rounding (one bin of margin each way).
+        int lo = 0, hi = 0;
+        for (const int u : {0, width - 1}) {
+          for (const int v : {0, height - 1}) {
+            const int rho = cvRound(static_cast<float>(u) * cos_[n] + static_cast<float>(v) * sin_[n]);
+            lo = std::min(lo, rho);
+            hi = std::max(hi, rho);
+          }
+        }
+        rows_start[n] = total - (lo - 1);  // Index of rho 0 in votes_.
+        total += hi - lo + 3;
+      }
+      votes_.assign(static_cast<size_t>(total), 0);
+      for (int i = 0; i < 3 * kAngles; ++i) row_[i] = rows_start[i % kAngles];
     }
   }
 
@@ -107,7 +126,7 @@ class Accumulator {
   }
 
   int window_ = 0;
-  int offset_ = 0, rhos_ = 0;
+  int width_ = -1, height_ = -1;  // The map the rows are laid out for.
   std::vector<int16_t> votes_;  // A bin holds at most the pixels of one line: far below 2^15.
   // Angle tables three times over, so that a window is contiguous wherever it wraps.
   float cos_[3 * kAngles], sin_[3 * kAngles];

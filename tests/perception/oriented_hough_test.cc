@@ -117,6 +117,37 @@ TEST(OrientedHoughTest, EdgePixelsVoteOnlyForLinesAlongTheirGradient) {
   EXPECT_EQ(segments.size(), 1u);
 }
 
+// The accumulator keeps, per angle, only the rhos the map's pixels reach there (their extremes are
+// at its corners). The map's own borders are lines at those extremes: a row too short would put
+// their votes in another angle's bins. Each border is found whole, on maps of several shapes.
+TEST(OrientedHoughTest, LinesAlongTheMapsBordersAreFoundWhole) {
+  for (const cv::Size size : {cv::Size(97, 41), cv::Size(41, 97), cv::Size(320, 240)}) {
+    const int w = size.width, h = size.height;
+    cv::Mat edges(size, CV_8U, cv::Scalar(0));
+    cv::Mat dx(size, CV_16S, cv::Scalar(0)), dy(size, CV_16S, cv::Scalar(0));
+    // Gradients across each border (the corners keep the last one written).
+    edges.row(0).setTo(255);
+    dy.row(0).setTo(200);
+    edges.row(h - 1).setTo(255);
+    dy.row(h - 1).setTo(-200);
+    edges.col(0).setTo(255);
+    dx.col(0).setTo(200);
+    dy.col(0).setTo(0);
+    edges.col(w - 1).setTo(255);
+    dx.col(w - 1).setTo(-200);
+    dy.col(w - 1).setTo(0);
+    OrientedHoughOptions options;
+    options.min_length = 10;
+    std::vector<cv::Vec4i> segments;
+    OrientedHoughSegments(edges, dx, dy, options, &segments);
+    const cv::Point corners[4] = {{0, 0}, {w - 1, 0}, {w - 1, h - 1}, {0, h - 1}};
+    for (int i = 0; i < 4; ++i) {
+      EXPECT_GT(Covered(segments, corners[i], corners[(i + 1) % 4], 0.5), 0.9)
+          << w << "x" << h << ", border " << i;
+    }
+  }
+}
+
 // The accumulator is reused by the calls of a thread: each call must leave it empty.
 TEST(OrientedHoughTest, TheSameImageGivesTheSameSegmentsWhateverCameBefore) {
   const EdgeInput quad = EdgesOf(QuadImage());
