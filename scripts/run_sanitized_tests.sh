@@ -12,9 +12,15 @@ JOBS=${JOBS:-$(nproc)}
 export ASAN_OPTIONS=${ASAN_OPTIONS:-abort_on_error=1:detect_leaks=1:strict_string_checks=1}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-halt_on_error=1:abort_on_error=1:print_stacktrace=1}
 start=$(date +%s)
-# -O1 keeps the build and the run quick; asserts (Eigen's bounds checks) stay on.
+# -O1 keeps the build and the run quick; asserts (Eigen's bounds checks) stay on. The gold linker
+# (binutils) links the 80-odd sanitized binaries in about half the time of the default one.
+LINKER=()
+if ld.gold --version >/dev/null 2>&1; then
+  LINKER=(-DCMAKE_EXE_LINKER_FLAGS=-fuse-ld=gold -DCMAKE_SHARED_LINKER_FLAGS=-fuse-ld=gold)
+fi
 cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -g1" \
-  -DCORRIDOR_SANITIZE=ON -DCORRIDOR_WERROR=ON -DCORRIDOR_BUILD_BENCHMARKS=OFF >/dev/null
+  -DCORRIDOR_SANITIZE=ON -DCORRIDOR_WERROR=ON -DCORRIDOR_BUILD_BENCHMARKS=OFF "${LINKER[@]}" \
+  >/dev/null
 cmake --build "$BUILD_DIR" -j"$JOBS"
 built=$(date +%s)
 (cd "$BUILD_DIR" && ctest --output-on-failure -j"$JOBS" --timeout 1200 "$@")
