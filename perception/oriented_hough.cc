@@ -28,11 +28,11 @@ enum PixelState : uint8_t {
 };
 
 // The (angle, rho) vote counts, reused by the calls of one thread and emptied at the end of
-// each: allocating and first touching 0.6 MB (at 640x240) per call cost a third of the voting;
-// clearing it costs less than taking every vote back. Each angle's row holds only the rhos the
-// map's pixels reach at that angle (from its corners, where rho = u cos + v sin is extreme): 0.2
-// MB at 640x240 rather than 0.6 MB for every angle's full -(w + h) .. w + h, so that the votes'
-// scattered bins stay in a core's L2 cache.
+// each: allocating and first touching them per call cost a third of the voting; clearing them
+// costs less than taking every vote back. Each angle's row holds only the rhos the map's pixels
+// reach at that angle (from its corners, where rho = u cos + v sin is extreme): 0.2 MB at 640x248
+// rather than 0.6 MB for every angle's full -(w + h) .. w + h, so that the votes' scattered bins
+// stay in a core's L2 cache.
 class Accumulator {
  public:
   Accumulator() {
@@ -58,7 +58,8 @@ class Accumulator {
         int lo = 0, hi = 0;
         for (const int u : {0, width - 1}) {
           for (const int v : {0, height - 1}) {
-            const int rho = cvRound(static_cast<float>(u) * cos_[n] + static_cast<float>(v) * sin_[n]);
+            const int rho =
+                cvRound(static_cast<float>(u) * cos_[n] + static_cast<float>(v) * sin_[n]);
             lo = std::min(lo, rho);
             hi = std::max(hi, rho);
           }
