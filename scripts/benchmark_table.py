@@ -5,7 +5,8 @@ Usage: python3 scripts/benchmark_table.py FILE.json
 
 Reads the EndToEnd/<config>/<width>x<height> benchmarks and prints, per size, the median time per
 frame of every config (the mean when the run had no repetitions), in milliseconds, the ratios
-paper/best and best/floor, and best's width error on the timed frame (its width_error_mm
+paper/best and best/floor (and paper/best_paper_scope, like for like, when that config ran), and
+best's width error on the timed frame (its width_error_mm
 counter): a fast answer is only worth its time if it is right. Standard library only.
 """
 
@@ -84,13 +85,18 @@ def main(argv):
     print(f"Time per frame, ms ({stat} of real time; {context.get('num_cpus', '?')} CPUs "
           f"at {context.get('mhz_per_cpu', '?')} MHz, {context.get('date', '')})")
     print()
-    print("| size | " + " | ".join(configs) + " | paper/best | best/floor | best's width error, mm |")
-    print("|---|" + "---:|" * (len(configs) + 3))
+    # paper against best on the same scope (no ceiling or end wall), when that was run.
+    scoped = any(k[0] == "best_paper_scope" for k in times)
+    print("| size | " + " | ".join(configs) + " | paper/best | best/floor |" +
+          (" paper/best_paper_scope |" if scoped else "") + " best's width error, mm |")
+    print("|---|" + "---:|" * (len(configs) + 3 + scoped))
     for size in sizes:
         row = [times.get((c, size)) for c in configs]
         paper, best, floor = (times.get((c, size)) for c in MAIN_CONFIGS)
+        same_scope = f" {ratio(paper, times.get(('best_paper_scope', size)))} |" if scoped else ""
         print(f"| {size[0]}x{size[1]} | " + " | ".join(fmt(t) for t in row) +
-              f" | {ratio(paper, best)} | {ratio(best, floor)} | {fmt_mm(width_errors.get(('best', size)))} |")
+              f" | {ratio(paper, best)} | {ratio(best, floor)} |{same_scope}"
+              f" {fmt_mm(width_errors.get(('best', size)))} |")
     return 0
 
 
