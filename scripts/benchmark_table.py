@@ -6,8 +6,8 @@ Usage: python3 scripts/benchmark_table.py FILE.json
 Reads the EndToEnd/<config>/<width>x<height> benchmarks and prints, per size, the median time per
 frame of every config (the mean when the run had no repetitions), in milliseconds, the ratios
 paper/best and best/floor (and paper/best_paper_scope, like for like, when that config ran), and
-best's width error on the timed frame (its width_error_mm
-counter): a fast answer is only worth its time if it is right. Standard library only.
+best's width error on the timed frame (its width_error_mm counter): a fast answer is only worth
+its time if it is right. Standard library only.
 """
 
 import json

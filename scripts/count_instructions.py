@@ -17,6 +17,7 @@ Standard library only.
 
 import os
 import re
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -81,7 +82,7 @@ def main(argv):
         print(f"count_instructions: {binary} not built "
               "(bash scripts/build.sh -DCORRIDOR_BUILD_BENCHMARKS=ON)", file=sys.stderr)
         return 1
-    if subprocess.run(["which", "valgrind"], capture_output=True).returncode != 0:
+    if shutil.which("valgrind") is None:
         print("count_instructions: valgrind is not installed (apt-get install valgrind)",
               file=sys.stderr)
         return 1
