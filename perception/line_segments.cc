@@ -64,24 +64,31 @@ EdgeSegments DetectSegments(const cv::Mat& image, int roi_top, const SegmentOpti
   CannyFromGradients(dx, dy, options.canny_low_ratio * high, high, false, &out.edges);
   out.dx = dx;
   out.dy = dy;
+  out.segments = HoughSegments(out, options);
+  return out;
+}
+
+std::vector<cv::Vec4f> HoughSegments(const EdgeSegments& found, const SegmentOptions& options) {
   std::vector<cv::Vec4i> lines;
+  if (found.edges.empty()) return {};
   if (options.hough_angle_window_deg > 0) {
     OrientedHoughOptions hough;
     hough.threshold = options.hough_threshold;
     hough.min_length = options.hough_min_length;
     hough.max_gap = options.hough_max_gap;
     hough.angle_window_deg = options.hough_angle_window_deg;
-    OrientedHoughSegments(out.edges, dx, dy, hough, &lines);
+    OrientedHoughSegments(found.edges, found.dx, found.dy, hough, &lines);
   } else {
-    cv::HoughLinesP(out.edges, lines, 1.0, CV_PI / 180.0, options.hough_threshold,
+    cv::HoughLinesP(found.edges, lines, 1.0, CV_PI / 180.0, options.hough_threshold,
                     options.hough_min_length, options.hough_max_gap);
   }
-  out.segments.reserve(lines.size());
+  std::vector<cv::Vec4f> segments;
+  segments.reserve(lines.size());
   for (const auto& l : lines) {
-    out.segments.emplace_back(static_cast<float>(l[0]), static_cast<float>(l[1] + roi_top),
-                              static_cast<float>(l[2]), static_cast<float>(l[3] + roi_top));
+    segments.emplace_back(static_cast<float>(l[0]), static_cast<float>(l[1] + found.roi_top),
+                          static_cast<float>(l[2]), static_cast<float>(l[3] + found.roi_top));
   }
-  return out;
+  return segments;
 }
 
 MergedLine LineThrough(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
