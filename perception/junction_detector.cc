@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -206,6 +207,13 @@ bool JunctionDetectorOptions::Check(std::string* why) const {
     reason = "hough_threshold must be >= 1";
   } else if (!(hough_min_length_fraction > 0 && hough_min_length_fraction < 1)) {
     reason = "hough_min_length_fraction must be in (0, 1)";
+  } else if (relaxed_hough_threshold < 0 ||
+             !(relaxed_hough_min_length_fraction > 0 && relaxed_hough_min_length_fraction < 1) ||
+             !(relaxed_min_line_fraction >= 0 && relaxed_min_line_fraction < 1) ||
+             !(relaxed_min_partner_boundary >= 0 && relaxed_min_partner_boundary <= 1)) {
+    reason = "relaxed_hough_threshold must be >= 0 (0 = no second look), "
+             "relaxed_hough_min_length_fraction in (0, 1), relaxed_min_line_fraction in [0, 1) "
+             "and relaxed_min_partner_boundary in [0, 1]";
   } else if (!(hough_max_gap >= 0)) {
     reason = "hough_max_gap must be >= 0";
   } else if (!(hough_angle_window_deg >= 0 && hough_angle_window_deg < 90)) {
@@ -308,13 +316,17 @@ Status DetectJunctionsIn(const cv::Mat& bgr, const cv::Mat* halved,
     for (int s = 1; s < scale; s *= 2) PyrDown(work, &work);
   }
   const int work_roi_top = roi_top / scale - crop_top / scale;
-  EdgeSegments found =
-      DetectSegments(work, work_roi_top, JunctionSegmentOptions(options, height, scale));
-  for (cv::Vec4f& segment : found.segments) {
-    for (int k = 0; k < 4; ++k) {
-      segment[k] = static_cast<float>(scale * segment[k] + (k % 2 == 1 ? crop_top : 0));
+  const SegmentOptions segment_options = JunctionSegmentOptions(options, height, scale);
+  EdgeSegments found = DetectSegments(work, work_roi_top, segment_options);
+  // Working-image segments into full-image coordinates.
+  const auto to_image = [&](std::vector<cv::Vec4f>* segments) {
+    for (cv::Vec4f& segment : *segments) {
+      for (int k = 0; k < 4; ++k) {
+        segment[k] = static_cast<float>(scale * segment[k] + (k % 2 == 1 ? crop_top : 0));
+      }
     }
-  }
+  };
+  to_image(&found.segments);
   // Edge pixels in full-image coordinates, for the refits, in row-major order.
   const auto edge_points = [&]() {
     std::vector<Eigen::Vector2d> points;
@@ -333,8 +345,6 @@ Status DetectJunctionsIn(const cv::Mat& bgr, const cv::Mat* halved,
     return NoCorridor(result, msg.str());
   }
   result->segments = found.segments;
-  const std::vector<MergedLine> lines =
-      MergeSegments(found.segments, options.merge_angle_deg, options.merge_distance_px);
 
   // The paper's scene prior (eq. 2), read with theta measured from the vertical image axis:
   // lines steeper than 90 deg - atan(H/W) are door frames and pillars, not junctions.
@@ -354,16 +364,76 @@ Status DetectJunctionsIn(const cv::Mat& bgr, const cv::Mat* halved,
   refit.options.support_distance_px = options.support_distance_px;
   const cv::Mat roi = color.rowRange(roi_top, height);
   const FloorAppearance floor = SampleFloor(roi, roi_top, 2 * scale);
-  std::vector<JunctionCandidate> left, right;
-  for (const auto& line : lines) {
-    if (line.length < min_length || line.length > max_length) continue;
-    if (line.inclination_deg < options.min_inclination_deg ||
-        line.inclination_deg > max_inclination) {
-      continue;
-    }
-    JunctionCandidate candidate{line, BoundaryScore(roi, floor, line, roi_top, scale)};
-    (line.slope < 0 ? left : right).push_back(candidate);
+  BaseboardBandTest band;
+  if (options.baseboard_band_contrast > 0) {
+    band.min_contrast = options.baseboard_band_contrast;
+    band.contrast = [&](const MergedLine& upper, const MergedLine& lower) {
+      return BandContrast(roi, floor, upper, lower, roi_top, scale);
+    };
   }
+  // The lines that may be junctions, per side, and the best pair of them (none when a side has no
+  // candidate).
+  struct PairSearch {
+    std::vector<MergedLine> lines;
+    std::vector<JunctionCandidate> left, right;
+    SelectedPair pair;
+  };
+  const auto add_candidates = [&](const std::vector<MergedLine>& lines, double shortest,
+                                  PairSearch* out) {
+    for (const auto& line : lines) {
+      if (line.length < shortest || line.length > max_length) continue;
+      if (line.inclination_deg < options.min_inclination_deg ||
+          line.inclination_deg > max_inclination) {
+        continue;
+      }
+      JunctionCandidate candidate{line, BoundaryScore(roi, floor, line, roi_top, scale)};
+      (line.slope < 0 ? out->left : out->right).push_back(candidate);
+    }
+  };
+  const auto select = [&](PairSearch* out) {
+    if (out->left.empty() || out->right.empty()) return;
+    out->pair =
+        SelectJunctionPair(out->left, out->right, out->lines, Eigen::Vector2d(width, height), band);
+  };
+  PairSearch chosen;
+  chosen.lines = MergeSegments(found.segments, options.merge_angle_deg, options.merge_distance_px);
+  add_candidates(chosen.lines, min_length, &chosen);
+  select(&chosen);
+  if (chosen.pair.left < 0 && options.relaxed_hough_threshold > 0) {
+    // A second look at the same edges for shorter pieces: a faint junction broken by door bottoms
+    // gives pieces too short for the first Hough, which merge into one line. Only to complete a
+    // pair around a first-look line that looks like the floor's edge, with a long line: blob
+    // outlines of outdoor scenes give short straight pieces that line up by chance too.
+    SegmentOptions relaxed = segment_options;
+    relaxed.hough_threshold = options.relaxed_hough_threshold;
+    relaxed.hough_min_length =
+        std::max(8.0, options.relaxed_hough_min_length_fraction * height / scale);
+    std::vector<cv::Vec4f> segments = HoughSegments(found, relaxed);
+    to_image(&segments);
+    PairSearch second;
+    second.lines = MergeSegments(segments, options.merge_angle_deg, options.merge_distance_px);
+    add_candidates(second.lines, std::max(min_length, options.relaxed_min_line_fraction * height),
+                   &second);
+    // The second look's lines first, then the first look's: an index below these counts is new.
+    const int new_left = static_cast<int>(second.left.size());
+    const int new_right = static_cast<int>(second.right.size());
+    second.left.insert(second.left.end(), chosen.left.begin(), chosen.left.end());
+    second.right.insert(second.right.end(), chosen.right.begin(), chosen.right.end());
+    select(&second);
+    const SelectedPair& p = second.pair;
+    const bool left_new = p.left < new_left, right_new = p.right < new_right;
+    if (p.left >= 0 && left_new != right_new &&
+        (left_new ? second.right[p.right] : second.left[p.left]).boundary >=
+            options.relaxed_min_partner_boundary) {
+      chosen = std::move(second);
+      result->segments = std::move(segments);
+      result->relaxed_hough = true;
+    }
+  }
+  const std::vector<MergedLine>& lines = chosen.lines;
+  const std::vector<JunctionCandidate>& left = chosen.left;
+  const std::vector<JunctionCandidate>& right = chosen.right;
+  const SelectedPair& pair = chosen.pair;
   if (left.empty() || right.empty()) {
     std::ostringstream msg;
     msg << "no " << (left.empty() ? "left" : "right") << " junction candidate among "
@@ -375,15 +445,6 @@ Status DetectJunctionsIn(const cv::Mat& bgr, const cv::Mat* halved,
     }
     return status;
   }
-  BaseboardBandTest band;
-  if (options.baseboard_band_contrast > 0) {
-    band.min_contrast = options.baseboard_band_contrast;
-    band.contrast = [&](const MergedLine& upper, const MergedLine& lower) {
-      return BandContrast(roi, floor, upper, lower, roi_top, scale);
-    };
-  }
-  const SelectedPair pair =
-      SelectJunctionPair(left, right, lines, Eigen::Vector2d(width, height), band);
   if (pair.left < 0) {
     return NoCorridor(result, "no pair of lines meets at a vanishing point above the floor");
   }

@@ -26,6 +26,10 @@ struct JunctionDetectorOptions {
   double hough_min_length_fraction = 0.04;  // Shortest Hough segment, as a fraction of the image height.
   double hough_max_gap = 6;          // Largest gap bridged inside one Hough segment, px.
   double hough_angle_window_deg = 15; // Each edge pixel votes only for lines within this of its gradient's direction (OrientedHoughSegments); 0 = cv::HoughLinesP, all angles.
+  int relaxed_hough_threshold = 12;  // When no pair is found, Hough looks again at the same edges with this threshold (votes): a faint junction broken by door bottoms gives only short pieces; 0 = no second look.
+  double relaxed_hough_min_length_fraction = 0.02;  // ... and this shortest segment, fraction of the height.
+  double relaxed_min_line_fraction = 0.2;  // A line found only on the second look is at least this long, fraction of the height (a broken junction spans much of the image; chance alignments are short).
+  double relaxed_min_partner_boundary = 0.1;  // ... and pairs only with a first-look line whose BoundaryScore (floor below, something else above) is at least this.
   double merge_angle_deg = 2.5;      // Segments whose angles differ less than this may merge (the paper's NMS).
   double merge_distance_px = 4;      // ... and whose lines pass within this distance of each other.
   double min_length_fraction = 0.1;  // Scene prior (eq. 2): shortest junction, fraction of the height H (paper: 0.25).

@@ -27,6 +27,7 @@ struct JunctionPair {
   Eigen::Vector2d vanishing_point = Eigen::Vector2d::Zero();  // Intersection of the two lines.
   double floor_texture = -1;      // Fraction of the floor between the lines in strong edges along no corridor line (JunctionDetectorOptions::max_floor_texture); -1 = not measured.
   std::vector<cv::Vec4f> segments;  // All Hough segments in the ROI (for drawing and debugging).
+  bool relaxed_hough = false;     // True when the pair came from the second, relaxed Hough look (JunctionDetectorOptions::relaxed_hough_threshold): a faint or broken junction.
 
   // Per side, a parallel line just below the chosen junction that looks less like the floor's
   // boundary: the junction if the chosen line is a baseboard's top after all (another cue, the

@@ -360,6 +360,10 @@ Status DepthRecoverer::Detect(const cv::Mat& image, const Camera& camera,
   } else {
     status = DetectJunctions(bgr, options_.perception, &result->junctions);
   }
+  if (result->junctions.status.ok() && result->junctions.relaxed_hough) {
+    AddFallbackNote("junctions from the second, relaxed Hough look: a faint or broken junction",
+                    result);
+  }
   if (track != nullptr) {
     track->Searched(result->junctions, bgr.size(),
                     has_tracked && SameJunctions(tracked, result->junctions,

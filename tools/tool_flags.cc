@@ -65,6 +65,10 @@ DEFINE_double(roi_top, 0.5, "Junction search region starts at this fraction of t
 DEFINE_double(hough_angle_window, 15.0,
               "Junction search: each edge pixel votes only for lines within this many degrees of "
               "its gradient's direction (oriented Hough); 0 = OpenCV's HoughLinesP, all angles");
+DEFINE_int32(relaxed_hough_threshold, 12,
+             "Junction search: when no pair of junctions is found, look at the same edges again "
+             "with this Hough threshold (votes) and shorter segments, for a faint junction broken "
+             "into short pieces (door bottoms); 0 = no second look");
 DEFINE_double(max_floor_texture, 0.015,
               "A floor between the junctions with more strong edges along no corridor line "
               "(horizontal, vertical, toward the vanishing point) than this fraction is not a "
@@ -95,6 +99,7 @@ Status RecoverDepthOptionsFromFlags(RecoverDepthOptions* options) {
   options->perception.roi_top_fraction = FLAGS_roi_top;
   options->perception.max_floor_texture = FLAGS_max_floor_texture;
   options->perception.hough_angle_window_deg = FLAGS_hough_angle_window;
+  options->perception.relaxed_hough_threshold = FLAGS_relaxed_hough_threshold;
   std::unique_ptr<DepthRecoverer> probe;
   return DepthRecoverer::Create(*options, &probe);
 }

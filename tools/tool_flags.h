@@ -33,6 +33,7 @@ DECLARE_double(baseboard_band_contrast);
 DECLARE_double(roi_top);
 DECLARE_double(max_floor_texture);
 DECLARE_double(hough_angle_window);
+DECLARE_int32(relaxed_hough_threshold);
 
 namespace corridor {
 
