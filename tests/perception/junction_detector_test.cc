@@ -97,6 +97,14 @@ TEST(JunctionDetectorTest, OptionsCheckRejectsBadValues) {
   o = JunctionDetectorOptions();
   o.hough_threshold = 0;
   EXPECT_FALSE(o.Check(&why));
+  o = JunctionDetectorOptions();
+  o.relaxed_hough_threshold = -1;
+  EXPECT_FALSE(o.Check(&why));
+  EXPECT_NE(why.find("relaxed_hough_threshold"), std::string::npos) << why;
+  o.relaxed_hough_threshold = 0;  // No second look.
+  EXPECT_TRUE(o.Check(&why)) << why;
+  o.relaxed_hough_min_length_fraction = 0;
+  EXPECT_FALSE(o.Check(&why));
 }
 
 TEST(JunctionDetectorTest, SampleAlongLineIsEvenlySpacedByHand) {

@@ -25,7 +25,8 @@ bool Plausible(const JunctionPair& pair, const cv::Size& size) {
 }
 
 // A regression floor for the photographs: both junctions, with the right slopes and the
-// vanishing point above them, on at least 9 of the 11 (measured: 9; see the note on issue 10).
+// vanishing point above them, on all 11 (measured: 9 at issue 10, 10 from session 13 on, 11 since
+// session 17's second Hough look found rtabmap_6's right junction, broken by door bottoms).
 TEST(RealPhotosTest, BothJunctionsOnMostPhotos) {
   int found = 0;
   for (const char* name : kPhotos) {
@@ -37,7 +38,7 @@ TEST(RealPhotosTest, BothJunctionsOnMostPhotos) {
     found += ok;
     std::printf("%-14s %s\n", name, ok ? "both junctions" : pair.status.ToString().c_str());
   }
-  EXPECT_GE(found, 9);
+  EXPECT_GE(found, 11);
 }
 
 }  // namespace

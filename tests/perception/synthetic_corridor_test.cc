@@ -1,7 +1,9 @@
 // The detector on frames of the generator (an independent ray caster): the detected junctions
 // against the true ones, projected by hand from the frame's truth.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
@@ -114,6 +116,62 @@ TEST(SyntheticCorridorTest, ACallersHalvedImageGivesTheSameLines) {
     EXPECT_EQ(own.right.line, shared.right.line) << width;
     EXPECT_EQ(own.vanishing_point, shared.vanishing_point) << width;
   }
+}
+
+// The angle (degrees) between a found line and the true one, and the larger distance (px) of the
+// found line's support ends from the true line.
+std::pair<double, double> LineError(const Eigen::Vector3d& truth, const JunctionLine& found) {
+  const double angle_deg =
+      std::acos(std::min(1.0, std::abs(truth.head<2>().dot(found.line.head<2>())))) * 180 / M_PI;
+  const double offset_px = std::max(std::abs(truth.dot(found.near_end.homogeneous())),
+                                    std::abs(truth.dot(found.far_end.homogeneous())));
+  return {angle_deg, offset_px};
+}
+
+// A junction broken into short pieces by door bottoms (CorridorWithBrokenRightJunction): the
+// first Hough finds no right candidate, and the second, relaxed look finds the pieces and merges
+// them into the junction. Truth: the generator's walls, projected by hand.
+TEST(SyntheticCorridorTest, AJunctionBrokenByDoorBottomsIsFoundOnASecondLook) {
+  const Camera camera = Camera::FromHorizontalFov(640, 480, 80.0 * M_PI / 180, 1.2);
+  const synth::Frame frame =
+      testing_util::CorridorWithBrokenRightJunction(camera, {0.05, 0.03, 0.1, 1.2, 2.0});
+  ASSERT_FALSE(frame.bgr.empty());
+  const Eigen::Vector3d left_truth = testing_util::TrueJunction(frame.truth, camera, -1);
+  const Eigen::Vector3d right_truth = testing_util::TrueJunction(frame.truth, camera, 1);
+  JunctionDetectorOptions first_only;
+  first_only.relaxed_hough_threshold = 0;
+  JunctionPair first;
+  ASSERT_TRUE(DetectJunctions(frame.bgr, first_only, &first).ok());
+  EXPECT_FALSE(first.status.ok()) << "the broken junction is found without the second look";
+  JunctionPair pair;
+  ASSERT_TRUE(DetectJunctions(frame.bgr, JunctionDetectorOptions(), &pair).ok());
+  ASSERT_TRUE(pair.status.ok()) << pair.status.ToString();
+  EXPECT_TRUE(pair.relaxed_hough);
+  const auto [left_angle, left_offset] = LineError(left_truth, pair.left);
+  const auto [right_angle, right_offset] = LineError(right_truth, pair.right);
+  std::printf("left %.2f deg %.2f px, right %.2f deg %.2f px\n", left_angle, left_offset,
+              right_angle, right_offset);
+  EXPECT_LT(left_angle, 0.5);
+  EXPECT_LT(left_offset, 2.0);
+  EXPECT_LT(right_angle, 0.5);
+  EXPECT_LT(right_offset, 2.0);
+}
+
+// The second look is only for frames the first one cannot pair: an intact corridor keeps the
+// first look's lines.
+TEST(SyntheticCorridorTest, TheSecondLookLeavesAFoundPairAlone) {
+  const Camera camera = Camera::FromHorizontalFov(640, 480, 80.0 * M_PI / 180, 1.2);
+  const synth::Frame frame =
+      testing_util::RenderCorridorFrame(camera, 2.2, 2.8, 5, {0.05, 0.03, 0.1, 1.2, 2.0}, 0.0);
+  JunctionDetectorOptions first_only;
+  first_only.relaxed_hough_threshold = 0;
+  JunctionPair first, pair;
+  ASSERT_TRUE(DetectJunctions(frame.bgr, first_only, &first).ok());
+  ASSERT_TRUE(DetectJunctions(frame.bgr, JunctionDetectorOptions(), &pair).ok());
+  ASSERT_TRUE(first.status.ok()) << first.status.ToString();
+  EXPECT_FALSE(pair.relaxed_hough);
+  EXPECT_EQ(first.left.line, pair.left.line);
+  EXPECT_EQ(first.right.line, pair.right.line);
 }
 
 TEST(SyntheticCorridorTest, AHalvedImageOfTheWrongSizeIsRejected) {
