@@ -17,6 +17,16 @@
 namespace corridor {
 namespace {
 
+// The angle (degrees) between a found line and the true one, and the larger distance (px) of the
+// found line's support ends from the true line.
+std::pair<double, double> LineError(const Eigen::Vector3d& truth, const JunctionLine& found) {
+  const double angle_deg =
+      std::acos(std::min(1.0, std::abs(truth.head<2>().dot(found.line.head<2>())))) * 180 / M_PI;
+  const double offset_px = std::max(std::abs(truth.dot(found.near_end.homogeneous())),
+                                    std::abs(truth.dot(found.far_end.homogeneous())));
+  return {angle_deg, offset_px};
+}
+
 // Easy scenes of the paper preset, first and last frame of each: most lines within 1.5 degrees
 // and 3 px of the truth at both ends of their support, none grossly off (measured: 21 of 24
 // close; the misses are near-field baseboards and a door beside the camera).
@@ -33,12 +43,7 @@ TEST(SyntheticCorridorTest, DetectedJunctionsMatchTheTrueOnes) {
       ASSERT_TRUE(pair.status.ok()) << preset.name << " " << f << ": " << pair.status.ToString();
       for (int side = -1; side <= 1; side += 2) {
         const Eigen::Vector3d truth = testing_util::TrueJunction(frame.truth, preset.camera, side);
-        const JunctionLine& found = side < 0 ? pair.left : pair.right;
-        const double angle_deg =
-            std::acos(std::min(1.0, std::abs(truth.head<2>().dot(found.line.head<2>())))) * 180 /
-            M_PI;
-        const double offset_px = std::max(std::abs(truth.dot(found.near_end.homogeneous())),
-                                          std::abs(truth.dot(found.far_end.homogeneous())));
+        const auto [angle_deg, offset_px] = LineError(truth, side < 0 ? pair.left : pair.right);
         EXPECT_LT(angle_deg, 8.0) << preset.name << " frame " << f << " side " << side;
         close += angle_deg < 1.5 && offset_px < 3.0;
         ++checked;
@@ -74,12 +79,8 @@ TEST(SyntheticCorridorTest, WorkingResolutionKeepsTheLinesOfLargeImages) {
         if (!found.status.ok()) continue;
         for (int side = -1; side <= 1; side += 2) {
           const Eigen::Vector3d truth = testing_util::TrueJunction(frame.truth, camera, side);
-          const JunctionLine& line = side < 0 ? found.left : found.right;
-          const double angle_deg =
-              std::acos(std::min(1.0, std::abs(truth.head<2>().dot(line.line.head<2>())))) *
-              180 / M_PI;
-          const double offset_px = std::max(std::abs(truth.dot(line.near_end.homogeneous())),
-                                            std::abs(truth.dot(line.far_end.homogeneous())));
+          const auto [angle_deg, offset_px] =
+              LineError(truth, side < 0 ? found.left : found.right);
           close[k] += angle_deg < 1.0 && offset_px < 4.0;
         }
       }
@@ -116,16 +117,6 @@ TEST(SyntheticCorridorTest, ACallersHalvedImageGivesTheSameLines) {
     EXPECT_EQ(own.right.line, shared.right.line) << width;
     EXPECT_EQ(own.vanishing_point, shared.vanishing_point) << width;
   }
-}
-
-// The angle (degrees) between a found line and the true one, and the larger distance (px) of the
-// found line's support ends from the true line.
-std::pair<double, double> LineError(const Eigen::Vector3d& truth, const JunctionLine& found) {
-  const double angle_deg =
-      std::acos(std::min(1.0, std::abs(truth.head<2>().dot(found.line.head<2>())))) * 180 / M_PI;
-  const double offset_px = std::max(std::abs(truth.dot(found.near_end.homogeneous())),
-                                    std::abs(truth.dot(found.far_end.homogeneous())));
-  return {angle_deg, offset_px};
 }
 
 // A junction broken into short pieces by door bottoms (CorridorWithBrokenRightJunction): the
