@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Renders the generator's real-buildings preset, one dataset per class (10 scenes x 20 frames,
 # 640x480, seeds in synth/real_buildings.h): OUT/<class>/<class>_s<seed>/{rgb,depth,...}.
-# With --eval, also runs corridor_eval --solver=joint on each class (one thread) into
+# With --eval, also runs corridor_eval --solver=joint on each class (single frames, one thread) into
 # OUT/eval/<class>/ and prints the baseline table (scripts/real_buildings_table.py).
 #   scripts/make_real_buildings.sh [--eval] [OUT (default data/real_buildings)] [BUILD (default build)]
 set -euo pipefail
@@ -17,10 +17,11 @@ for c in $classes; do
     2> /dev/null
 done
 if [[ $eval_too == 1 ]]; then
+  mkdir -p "$out/eval"
   for c in $classes; do
     rm -rf "${out:?}/eval/$c"
     "$build/tools/corridor_eval" --dataset="$out/$c" --output_dir="$out/eval/$c" --solver=joint \
-      --threads=1 --write_depth=false > "$out/eval/$c.log" 2>&1 || true
+      --sequence=false --threads=1 --write_depth=false > "$out/eval/$c.log" 2>&1 || true
   done
   python3 "$here/real_buildings_table.py" "$out/eval" $classes
 fi
