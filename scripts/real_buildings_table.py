@@ -38,7 +38,7 @@ def summarise(path):
 
 
 def pct(k, n):
-    return f"{k} ({100.0 * k / n:.0f}%)" if n else str(k)
+    return f"{k} ({100.0 * k / n:.1f}%)" if n else str(k)
 
 
 def main():
