@@ -24,8 +24,9 @@ DEFINE_double(paper_scale, 1.0,
 DEFINE_string(scene_name, "corridor", "Scene folder name for the single and sequence presets");
 DEFINE_int32(width_px, 640, "Image width, px (single, sequence)");
 DEFINE_int32(height_px, 480, "Image height, px (single, sequence)");
-DEFINE_double(fx, 0, "Focal length, px (0: from --hfov_deg); fy = fx; principal point centred");
-DEFINE_double(hfov_deg, 80, "Horizontal field of view when --fx is 0, degrees");
+DEFINE_double(fx, 0, "Focal length, px (0: from --hfov); fy = fx; principal point centred");
+DEFINE_double(hfov, 80, "Horizontal field of view when --fx is 0, degrees");
+DEFINE_double(hfov_deg, 0, "Old name of --hfov (warns); 0 = unset");
 DEFINE_double(corridor_width, 2.2, "Corridor width, m");
 DEFINE_double(ceiling_height, 2.7, "Ceiling height, m");
 DEFINE_double(length, 40, "Distance to the end wall, m");
@@ -94,12 +95,12 @@ bool MakeCustomPreset(synth::ScenePreset* preset, std::string* why) {
     *why = "image size must be within 16..8192 px";
     return false;
   }
-  if (FLAGS_fx < 0 || !(FLAGS_hfov_deg > 1 && FLAGS_hfov_deg < 170)) {
-    *why = "--fx must be >= 0 and --hfov_deg within (1, 170)";
+  if (FLAGS_fx < 0 || !(FLAGS_hfov > 1 && FLAGS_hfov < 170)) {
+    *why = "--fx must be >= 0 and --hfov within (1, 170)";
     return false;
   }
   preset->camera = Camera::FromHorizontalFov(FLAGS_width_px, FLAGS_height_px,
-                                             FLAGS_hfov_deg * M_PI / 180.0, FLAGS_camera_height);
+                                             FLAGS_hfov * M_PI / 180.0, FLAGS_camera_height);
   if (FLAGS_fx > 0) preset->camera.fx = preset->camera.fy = FLAGS_fx;
   if (!preset->camera.Check(why)) return false;
   if (FLAGS_frames < 1 || FLAGS_frames > 100000) {
@@ -130,6 +131,10 @@ int Main(int argc, char** argv) {
   google::InitGoogleLogging(argv[0]);
   if (argc > 1) return Usage(std::string("unexpected argument '") + argv[1] + "'");
   if (FLAGS_output_dir.empty()) return Usage("--output_dir is required");
+  if (FLAGS_hfov_deg != 0) {
+    std::fprintf(stderr, "corridor_synth: --hfov_deg is now --hfov; taking %g\n", FLAGS_hfov_deg);
+    FLAGS_hfov = FLAGS_hfov_deg;
+  }
   std::vector<synth::ScenePreset> presets;
   if (FLAGS_preset == "paper") {
     if (!(FLAGS_paper_scale >= 0.25 && FLAGS_paper_scale <= 8)) {
@@ -142,7 +147,7 @@ int Main(int argc, char** argv) {
     options.frames = FLAGS_real_frames;
     options.width_px = FLAGS_width_px;
     options.height_px = FLAGS_height_px;
-    options.hfov_deg = FLAGS_hfov_deg;
+    options.hfov_deg = FLAGS_hfov;
     const Status status = synth::RealBuildingsPreset(FLAGS_real_class, options, &presets);
     if (!status.ok()) return Usage(status.message());
   } else if (FLAGS_preset == "sequence" || FLAGS_preset == "single") {

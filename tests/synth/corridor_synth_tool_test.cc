@@ -62,6 +62,12 @@ TEST_F(CorridorSynthToolTest, PartSwitchesAndRollOnASingleFrame) {
   EXPECT_EQ(RunSynth("--preset=single --roll=0.9 --width_px=96 --height_px=72 --output_dir=" +
                 dir_.string()),
             2);
+  // --hfov_deg is the old name of --hfov: still taken, and checked like it.
+  EXPECT_EQ(RunSynth("--preset=single --hfov_deg=70 --width_px=96 --height_px=72 --output_dir=" +
+                     dir_.string()),
+            0);
+  EXPECT_EQ(RunSynth("--preset=single --hfov_deg=175 --output_dir=" + dir_.string()), 2);
+  EXPECT_EQ(RunSynth("--preset=single --hfov=175 --output_dir=" + dir_.string()), 2);
 }
 
 }  // namespace
