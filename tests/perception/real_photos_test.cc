@@ -1,4 +1,4 @@
-// The detector on the real corridor photographs of ../shared/data/real-corridors/.
+// The detector on the real corridor photographs of tests/data/real-corridors/.
 #include <string>
 
 #include <gtest/gtest.h>
@@ -9,7 +9,7 @@
 namespace corridor {
 namespace {
 
-const std::string kDir = std::string(CORRIDOR_SHARED_DIR) + "/data/real-corridors/";
+const std::string kDir = std::string(CORRIDOR_SOURCE_DIR) + "/tests/data/real-corridors/";
 
 const char* const kPhotos[] = {"rtabmap_1.jpg", "rtabmap_2.jpg", "rtabmap_3.jpg", "rtabmap_4.jpg",
                                "rtabmap_5.jpg", "rtabmap_6.jpg", "rtabmap_7.jpg", "rtabmap_8.jpg",

@@ -17,7 +17,7 @@
 namespace corridor {
 namespace {
 
-const std::string kDir = std::string(CORRIDOR_SHARED_DIR) + "/data/real-corridors/";
+const std::string kDir = std::string(CORRIDOR_SOURCE_DIR) + "/tests/data/real-corridors/";
 
 Camera PhotoCamera(int width, int height, double fx, double fy, double cx, double cy) {
   Camera c;
