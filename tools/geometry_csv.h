@@ -9,8 +9,9 @@
 namespace corridor {
 
 // geometry.csv: a header row, then `frame,status,yaw,pitch,offset,width,ceiling_height,
-// end_distance,seconds,stamp` per frame; radians and metres with the signs of geometry.md; status
-// "ok", "ok: <how>" when one junction and a known width gave the geometry, or the error; stamp "<sec>.<nsec>" for a ROS bag message; an unknown value is empty.
+// end_distance,seconds,stamp` per frame; radians and metres with the signs of docs/geometry.md;
+// status "ok", "ok: <how>" when one junction and a known width gave the geometry, or the error;
+// stamp "<sec>.<nsec>" for a ROS bag message; an unknown value is empty.
 class GeometryCsv {
  public:
   void Add(const std::string& frame, const RecoverDepthResult& result,
