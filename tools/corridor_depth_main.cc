@@ -33,8 +33,9 @@
 #include "tools/input_source.h"
 #include "tools/progress.h"
 #include "tools/tool_flags.h"
+#include "tools/tool_help.h"
 
-DEFINE_string(input, "", "An image, a folder of images, or a dataset root");
+DEFINE_string(input, "", "An image, a folder of images, a dataset root, a ROS 1 bag or a video");
 DEFINE_string(output_dir, "", "Where the depth maps, pictures and geometry.csv go");
 DEFINE_bool(write_vis, true, "Write DIR/<scene>/vis/<frame>.png (input with lines beside depth)");
 DEFINE_double(vis_max_depth, 15.0, "Depth at the top of the colour scale in vis/, m");
@@ -168,13 +169,13 @@ int RunScene(const InputScene& scene, const DepthRecoverer& recoverer, const std
     write_error = WriteCameraYaml((scene_dir / "camera_used.yaml").string(), scene.camera);
   }
   if (!write_error.ok()) {
-    std::fprintf(stderr, "corridor_depth: --skip_existing: %s\n", write_error.ToString().c_str());
+    LOG(ERROR) << "corridor_depth: --skip_existing: " << write_error.ToString();
     return -1;
   }
   std::unique_ptr<FrameSource> input;
   const Status opened = OpenFrameSource(scene, &input);
   if (!opened.ok()) {
-    std::fprintf(stderr, "corridor_depth: %s\n", opened.ToString().c_str());
+    LOG(ERROR) << "corridor_depth: " << opened.ToString();
     return -1;
   }
   std::unique_ptr<RayTable> rays;
@@ -226,8 +227,16 @@ int RunScene(const InputScene& scene, const DepthRecoverer& recoverer, const std
       const std::string where = scene.kind == InputKind::kImages
                                     ? scene.frames[position].rgb_path
                                     : scene.stream_path + " frame " + frame.name;
-      std::fprintf(stderr, "%sframe %s failed: %s\n", total > 1 ? "\n" : "", where.c_str(),
-                   frame.result.status.ToString().c_str());
+      progress.Break();
+      LOG(WARNING) << "frame " << where << " failed: " << frame.result.status.ToString();
+    }
+    if (VLOG_IS_ON(1)) {
+      const CorridorGeometry& g = frame.result.geometry;
+      LOG(INFO) << scene.name << "/" << frame.name << ": " << frame.result.status.ToString();
+      if (frame.result.has_geometry) {
+        LOG(INFO) << "  yaw " << g.yaw << " rad, pitch " << g.pitch << " rad, offset " << g.offset
+                  << " m, width " << g.width << " m, ceiling " << g.ceiling_height << " m";
+      }
     }
     GeometryCsv row;
     write_error = WriteFrame(scene_dir, frame, rays.get(), &row);
@@ -244,24 +253,33 @@ int RunScene(const InputScene& scene, const DepthRecoverer& recoverer, const std
   progress.Finish();
   if (write_error.ok()) write_error = write_csv();  // Every row, the kept ones included.
   if (!write_error.ok()) {
-    std::fprintf(stderr, "corridor_depth: cannot write output: %s\n",
-                 write_error.ToString().c_str());
+    LOG(ERROR) << "corridor_depth: cannot write output: " << write_error.ToString();
     return -1;
   }
   *frames = static_cast<int>(computed) + *skipped;
   return failed;
 }
 
+ToolInfo DepthToolInfo() {
+  ToolInfo info;
+  info.name = "corridor_depth";
+  info.summary = "dense metric depth from images of a corridor";
+  info.usage =
+      "corridor_depth --input=photo.jpg --hfov=60 --camera_height=1.2 --output_dir=out\n"
+      "corridor_depth --input=PATH --camera=camera.yaml --output_dir=DIR [--solver=NAME]\n"
+      "corridor_depth --input=run.bag --image_topic=T --camera_height=M --output_dir=DIR";
+  info.notes =
+      "--input is an image, a folder of images, a dataset root, a ROS 1 bag or a video. Writes, "
+      "per scene, DIR/<scene>/depth/<frame>.png (16-bit millimetres, 0 = no estimate), "
+      "DIR/<scene>/vis/<frame>.png and DIR/<scene>/geometry.csv. Exit code 0: every frame ok; "
+      "1: some frames without depth; 2: bad usage, found before any work.";
+  info.flag_files = {"corridor_depth_main.cc", "tool_flags.cc"};
+  return info;
+}
+
 int Main(int argc, char** argv) {
-  gflags::SetUsageMessage(
-      "corridor_depth --input=PATH --output_dir=DIR [--camera=FILE] [--camera_height=M] "
-      "[--solver=NAME] [--rasterizer=NAME] [--skip_existing] [--image_topic=T] "
-      "[--camera_info_topic=T] [--write_cloud] [--output_bag=FILE]\n"
-      "--input is an image, a folder of images, a dataset root, a ROS 1 bag or a video");
-  const Status flags = CheckFlagNames(argc, argv);
-  if (!flags.ok()) return Usage(flags.message());
-  gflags::ParseCommandLineFlags(&argc, &argv, true);
-  google::InitGoogleLogging(argv[0]);
+  int exit_code = 0;
+  if (!ParseToolFlags(DepthToolInfo(), &argc, &argv, &exit_code)) return exit_code;
   if (argc > 1) return Usage(std::string("unexpected argument '") + argv[1] + "'");
   if (FLAGS_input.empty()) {
     return Usage("--input is required (an image, a folder, a dataset, a ROS bag or a video)");
@@ -331,7 +349,7 @@ int Main(int argc, char** argv) {
   if (bag_writer) {
     status = bag_writer->Close();
     if (!status.ok()) {
-      std::fprintf(stderr, "corridor_depth: %s\n", status.ToString().c_str());
+      LOG(ERROR) << "corridor_depth: " << status.ToString();
       return 2;
     }
   }

@@ -12,6 +12,8 @@
 
 #include "synth/presets.h"
 #include "synth/sequence.h"
+#include "tools/progress.h"
+#include "tools/tool_help.h"
 
 DEFINE_string(preset, "sequence", "paper (9 scenes x 15 frames), sequence, or single");
 DEFINE_string(output_dir, "", "Dataset root to write");
@@ -20,8 +22,9 @@ DEFINE_double(paper_scale, 1.0,
 DEFINE_string(scene_name, "corridor", "Scene folder name for the single and sequence presets");
 DEFINE_int32(width_px, 640, "Image width, px (single, sequence)");
 DEFINE_int32(height_px, 480, "Image height, px (single, sequence)");
-DEFINE_double(fx, 0, "Focal length, px (0: from --hfov_deg); fy = fx; principal point centred");
-DEFINE_double(hfov_deg, 80, "Horizontal field of view when --fx is 0, degrees");
+DEFINE_double(fx, 0, "Focal length, px (0: from --hfov); fy = fx; principal point centred");
+DEFINE_double(hfov, 80, "Horizontal field of view when --fx is 0, degrees");
+DEFINE_double(hfov_deg, 80, "Old name of --hfov");
 DEFINE_double(corridor_width, 2.2, "Corridor width, m");
 DEFINE_double(ceiling_height, 2.7, "Ceiling height, m");
 DEFINE_double(length, 40, "Distance to the end wall, m");
@@ -64,12 +67,12 @@ bool MakeCustomPreset(synth::ScenePreset* preset, std::string* why) {
     *why = "image size must be within 16..8192 px";
     return false;
   }
-  if (FLAGS_fx < 0 || !(FLAGS_hfov_deg > 1 && FLAGS_hfov_deg < 170)) {
-    *why = "--fx must be >= 0 and --hfov_deg within (1, 170)";
+  if (FLAGS_fx < 0 || !(FLAGS_hfov > 1 && FLAGS_hfov < 170)) {
+    *why = "--fx must be >= 0 and --hfov within (1, 170)";
     return false;
   }
   preset->camera = Camera::FromHorizontalFov(FLAGS_width_px, FLAGS_height_px,
-                                             FLAGS_hfov_deg * M_PI / 180.0, FLAGS_camera_height);
+                                             FLAGS_hfov * M_PI / 180.0, FLAGS_camera_height);
   if (FLAGS_fx > 0) preset->camera.fx = preset->camera.fy = FLAGS_fx;
   if (!preset->camera.Check(why)) return false;
   if (FLAGS_frames < 1 || FLAGS_frames > 100000) {
@@ -92,10 +95,26 @@ bool MakeCustomPreset(synth::ScenePreset* preset, std::string* why) {
   return true;
 }
 
+ToolInfo SynthToolInfo() {
+  ToolInfo info;
+  info.name = "corridor_synth";
+  info.summary = "synthetic corridors with exact ground truth, in the dataset layout";
+  info.usage =
+      "corridor_synth --preset=paper --output_dir=D      (the paper's 9 scenes x 15 frames)\n"
+      "corridor_synth --preset=sequence --frames=30 --corridor_width=2.5 --output_dir=D\n"
+      "corridor_synth --preset=single --yaw=0.1 --pitch=0.05 --output_dir=D";
+  info.flag_files = {"corridor_synth_main.cc"};
+  for (const char* scene : {"paper_scale", "corridor_width", "ceiling_height", "length", "clutter",
+                            "door_density", "contrast", "seed"}) {
+    info.groups.emplace_back(scene, FlagGroup::kInput);
+  }
+  info.aliases = {{"hfov_deg", "hfov"}};
+  return info;
+}
+
 int Main(int argc, char** argv) {
-  gflags::SetUsageMessage("corridor_synth --preset=paper|sequence|single --output_dir=DIR");
-  gflags::ParseCommandLineFlags(&argc, &argv, true);
-  google::InitGoogleLogging(argv[0]);
+  int exit_code = 0;
+  if (!ParseToolFlags(SynthToolInfo(), &argc, &argv, &exit_code)) return exit_code;
   if (argc > 1) return Usage(std::string("unexpected argument '") + argv[1] + "'");
   if (FLAGS_output_dir.empty()) return Usage("--output_dir is required");
   std::vector<synth::ScenePreset> presets;
@@ -114,10 +133,10 @@ int Main(int argc, char** argv) {
   }
   int frames = 0;
   for (const auto& preset : presets) {
-    const Status status = synth::WriteScene(FLAGS_output_dir, preset, [&](int done, int total) {
-      std::fprintf(stderr, "\r%s: %d/%d frames", preset.name.c_str(), done, total);
-      if (done == total) std::fputc('\n', stderr);
-    });
+    Progress progress(preset.name, static_cast<int>(preset.poses.size()));
+    const Status status = synth::WriteScene(FLAGS_output_dir, preset,
+                                            [&](int done, int /*total*/) { progress.Tick(done); });
+    progress.Finish();
     if (!status.ok()) return Usage(status.ToString());
     frames += static_cast<int>(preset.poses.size());
   }

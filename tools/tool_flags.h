@@ -5,6 +5,7 @@
 #include "core/status.h"
 #include "pipeline/recover_depth.h"
 #include "tools/input_source.h"
+#include "tools/tool_help.h"  // CheckFlagNames
 
 // The flags every tool that recovers depth takes (corridor_depth, corridor_eval, ...).
 DECLARE_string(camera);
@@ -40,10 +41,5 @@ namespace corridor {
 // RecoverDepthOptions from the flags, checked; InvalidArgument names the bad flag.
 Status RecoverDepthOptionsFromFlags(RecoverDepthOptions* options);
 CameraOverrides CameraOverridesFromFlags();
-
-// Call before gflags::ParseCommandLineFlags: an unknown flag is bad usage (the tools exit 2), but
-// gflags itself would exit 1 on it. InvalidArgument naming the first unknown flag; "--" ends the
-// flags; "--noNAME" is accepted for a boolean NAME.
-Status CheckFlagNames(int argc, char** argv);
 
 }  // namespace corridor
