@@ -9,7 +9,7 @@
 
 namespace corridor {
 
-// The geometry from the one visible floor/wall junction (issue 10: the other one hidden), when the
+// The geometry from the one visible floor/wall junction (the other one hidden), when the
 // corridor's width is known: a width prior given as an option, or the previous frame's width in a
 // sequence. Yaw and pitch come from where other lines meet the junction (its vanishing point);
 // without one, from the previous frame's pitch (`prior`, may be null), the yaw then from where the

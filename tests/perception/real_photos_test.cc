@@ -25,8 +25,8 @@ bool Plausible(const JunctionPair& pair, const cv::Size& size) {
 }
 
 // A regression floor for the photographs: both junctions, with the right slopes and the
-// vanishing point above them, on all 11 (measured: 9 at issue 10, 10 from session 13 on, 11 since
-// session 17's second Hough look found rtabmap_6's right junction, broken by door bottoms).
+// vanishing point above them, on all 11 (rtabmap_6's right junction, broken by door bottoms, is
+// found by the detector's second, relaxed Hough look).
 TEST(RealPhotosTest, BothJunctionsOnMostPhotos) {
   int found = 0;
   for (const char* name : kPhotos) {
