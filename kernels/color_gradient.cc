@@ -1,4 +1,4 @@
-#include "perception/color_gradient.h"
+#include "kernels/color_gradient.h"
 
 #include <algorithm>
 #include <cstdlib>
@@ -6,7 +6,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "core/cpu_features.h"
-#include "perception/image_border.h"
+#include "kernels/image_border.h"
 
 namespace corridor {
 namespace {
