@@ -20,10 +20,10 @@
 #include <opencv2/imgproc.hpp>
 
 #include "benchmarks/bench_frames.h"
+#include "kernels/canny_edges.h"
+#include "kernels/color_gradient.h"
 #include "perception/appearance.h"
-#include "perception/canny_edges.h"
 #include "perception/ceiling_detector.h"
-#include "perception/color_gradient.h"
 #include "perception/end_wall_detector.h"
 #include "perception/junction_tracker.h"
 #include "perception/line_segments.h"

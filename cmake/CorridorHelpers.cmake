@@ -32,7 +32,6 @@ endfunction()
 # The definitions every test binary (and the tests' shared precompiled header) compiles with.
 set(CORRIDOR_TEST_DEFINITIONS
   CORRIDOR_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
-  CORRIDOR_SHARED_DIR="${PROJECT_SOURCE_DIR}/../shared"
   CORRIDOR_BINARY_DIR="${PROJECT_BINARY_DIR}")
 
 # What the tests' shared precompiled header includes from, linked into every test binary.

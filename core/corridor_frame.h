@@ -1,6 +1,6 @@
 #pragma once
 
-// The corridor frame W and the camera frame C of geometry.md, section 2, as templated helpers
+// The corridor frame W and the camera frame C of docs/geometry.md, section 2, as templated helpers
 // so that Ceres' Jets flow through them. P_C = R P_W with R = R_x(pitch) R_y(yaw).
 
 #include <cmath>

@@ -4,7 +4,7 @@
 
 namespace corridor {
 
-// The straight-corridor model of geometry.md, section 2. Radians and metres.
+// The straight-corridor model of docs/geometry.md, section 2. Radians and metres.
 struct CorridorGeometry {
   double yaw = 0.0;             // phi: > 0 when the corridor axis appears right of cx.
   double pitch = 0.0;           // theta: > 0 when the camera is pitched down.

@@ -8,7 +8,7 @@
 
 namespace corridor {
 
-// geometry.md, sections 3 and 6: for every pixel, the smallest valid depth among floor, walls
+// docs/geometry.md, sections 3 and 6: for every pixel, the smallest valid depth among floor, walls
 // and (when known) ceiling. Along a row every dot product is affine in u; a ray table, built
 // once per camera, handles distortion.
 class ExactRasterizer : public DepthRasterizer {

@@ -14,7 +14,7 @@ namespace corridor {
 // The depth rasterisers: they take only a corridor geometry and a camera, never an image.
 enum class RasterizerType {
   kPaper,  // "paper": depth planes through pairs of junction points, interpolated (paper III-C.3).
-  kExact,  // "exact": the closed-form depth of the box model for every pixel (geometry.md 3, 6).
+  kExact,  // "exact": the box model's closed-form depth of every pixel (docs/geometry.md 3, 6).
 };
 
 const char* RasterizerTypeToString(RasterizerType type);

@@ -25,8 +25,8 @@ class StageMinimizer {
                              int* evaluations) const = 0;
 };
 
-// The paper's alternation (geometry.md, section 5): start from `initial` (or the options' pitch
-// prior), solve stage 1 (yaw, offset), then stage 2 (pitch, width), until nothing moves.
+// The paper's alternation (docs/geometry.md, section 5): start from `initial` (or the options'
+// pitch prior), solve stage 1 (yaw, offset), then stage 2 (pitch, width), until nothing moves.
 Status RunAlternation(const CorridorObservation& observation, const CorridorGeometry* initial,
                       const SolverOptions& options, const StageMinimizer& minimizer,
                       SolverSummary* summary);

@@ -14,8 +14,8 @@ namespace corridor {
 // Returns false for fewer than 2 distinct points.
 bool FitImageLine(const std::vector<Eigen::Vector2d>& points, Eigen::Vector3d* line);
 
-// The vanishing-point solution of geometry.md, section 4, from the two junction lines fitted to
-// the observation's points (each side's gross outliers trimmed first, see LineInlierMask; the
+// The vanishing-point solution of docs/geometry.md, section 4, from the two junction lines fitted
+// to the observation's points (each side's gross outliers trimmed first, see LineInlierMask; the
 // lateral positions are medians). Exact for noise-free lines. Fails (kImplausibleGeometry) when the
 // lines are parallel in the image (vanishing point at infinity), when the vanishing point lies
 // behind the camera, or when the points do not back-project onto the floor.

@@ -11,7 +11,7 @@
 namespace corridor {
 namespace {
 
-// geometry.md, section 4, behind the solver interface; ignores any initial estimate.
+// docs/geometry.md, section 4, behind the solver interface; ignores any initial estimate.
 class ClosedFormSolver : public CorridorSolver {
  public:
   std::string Name() const override { return "closed_form"; }

@@ -8,7 +8,7 @@ namespace corridor {
 // The solvers that fit the corridor model to the junction points.
 enum class SolverType {
   kGridSearch,          // "grid": the paper's exhaustive search over both stages.
-  kClosedForm,          // "closed_form": the vanishing-point solution (geometry.md, section 4).
+  kClosedForm,          // "closed_form": the vanishing-point solution (docs/geometry.md s4).
   kLevenbergMarquardt,  // "lm": Ceres Levenberg-Marquardt on the same two functors.
   kJoint,               // "joint": one LM problem over all four parameters (beyond the paper).
 };

@@ -1,6 +1,6 @@
 #pragma once
 
-// Stage 1 of the paper (III-B, eqs. 8-9), made exact in geometry.md section 5.
+// Stage 1 of the paper (III-B, eqs. 8-9), made exact in docs/geometry.md section 5.
 // Parameters: x = (yaw, offset). Pitch and camera height are held fixed.
 // Each left point is mapped to the virtual image and mirrored about u = cx; its residual is the
 // horizontal pixel distance to the mapped right line at the same virtual row (and vice versa).

@@ -1,6 +1,6 @@
 #pragma once
 
-// The virtual camera of geometry.md, section 5 (paper III-B): on the corridor's centre line
+// The virtual camera of docs/geometry.md, section 5 (paper III-B): on the corridor's centre line
 // (X_W = -offset), at the same height and pitch, with zero yaw. It maps a real-image floor point
 // to the virtual image. Templated so that Ceres' Jets pass through.
 

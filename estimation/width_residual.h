@@ -1,6 +1,6 @@
 #pragma once
 
-// Stage 2 of the paper (III-C.2, eq. 16), made exact in geometry.md section 5.
+// Stage 2 of the paper (III-C.2, eq. 16), made exact in docs/geometry.md section 5.
 // Parameters: x = (pitch, width). Yaw and offset are held fixed.
 // Each junction point, back-projected to the floor, must lie on its wall:
 //   r_k = X_W,k - (s_k w/2 - offset),  s = -1 left, +1 right,

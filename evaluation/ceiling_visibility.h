@@ -1,7 +1,7 @@
 #pragma once
 
 // Whether a frame shows its ceiling/wall junctions: the evaluation's own test of where the
-// ceiling-height criterion applies. It projects the true junctions (geometry.md, section 6:
+// ceiling-height criterion applies. It projects the true junctions (docs/geometry.md, section 6:
 // (-d_l, h - H_c, Z) and (d_r, h - H_c, Z) in the corridor frame) through the true geometry, and
 // measures how much of them lands inside the image. It uses nothing of the ceiling search.
 

@@ -7,7 +7,7 @@
 
 namespace corridor {
 
-// Depth metrics of geometry.md, section 7, for one image or averaged over a scene.
+// Depth metrics of docs/geometry.md, section 7, for one image or averaged over a scene.
 struct DepthMetrics {
   double abs_rel = 0;     // mean |gt - pred| / gt
   double sq_rel = 0;      // mean (gt - pred)^2 / gt

@@ -11,7 +11,7 @@
 
 namespace corridor {
 
-// The dataset layout (issue 2):
+// The dataset layout:
 //   <dataset>/<scene>/rgb/<frame>.png, <dataset>/<scene>/depth/<frame>.png (16-bit mm),
 //   <dataset>/<scene>/camera.yaml (or <dataset>/camera.yaml for every scene without one),
 //   <dataset>/<scene>/truth.yaml (optional), <dataset>/<scene>/floor/<frame>.png (optional).

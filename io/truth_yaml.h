@@ -12,7 +12,7 @@ namespace corridor {
 // {file, pitch, yaw, offset, width, camera_height, ceiling_height}, radians and metres.
 struct FrameTruth {
   std::string file;           // The colour image's file name, e.g. "000003.png".
-  CorridorGeometry geometry;  // Signs as in geometry.md.
+  CorridorGeometry geometry;  // Signs as in docs/geometry.md.
 };
 
 Status ReadTruthYaml(const std::string& path, std::vector<FrameTruth>* frames);

@@ -11,7 +11,7 @@
 
 namespace corridor {
 
-// Finding the ceiling height once the walls are known (beyond the paper; geometry.md s6).
+// Finding the ceiling height once the walls are known (beyond the paper; docs/geometry.md s6).
 struct CeilingDetectorOptions {
   double min_height = 1.8;         // Lowest ceiling considered, m above the floor.
   double max_height = 6.0;         // Highest ceiling considered, m above the floor.

@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <vector>
 
-#include "perception/edge_scan.h"
+#include "kernels/edge_scan.h"
 
 namespace corridor {
 namespace {

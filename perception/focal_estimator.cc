@@ -115,7 +115,7 @@ bool FindCorridorVp(const std::vector<ImageLine>& lines, const FocalSearch& sear
 }
 
 // The corridor's frame seen by the camera: P_C = R P_W with R = R_z(roll) R_x(pitch) R_y(yaw)
-// (geometry.md, plus a roll), and the focal length that images it.
+// (docs/geometry.md, plus a roll), and the focal length that images it.
 struct ManhattanFrame {
   double focal = 0;                    // px.
   double pitch = 0, yaw = 0, roll = 0;  // rad.

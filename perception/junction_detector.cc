@@ -9,11 +9,11 @@
 #include <Eigen/Geometry>
 #include <opencv2/imgproc.hpp>
 
+#include "kernels/edge_scan.h"
 #include "perception/appearance.h"
-#include "perception/edge_scan.h"
 #include "perception/floor_texture.h"
-#include "perception/junction_selector.h"
 #include "perception/junction_refit.h"
+#include "perception/junction_selector.h"
 #include "perception/line_segments.h"
 #include "perception/robust_line_fit.h"
 #include "perception/working_image.h"

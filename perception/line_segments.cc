@@ -7,10 +7,10 @@
 #include <Eigen/Geometry>
 #include <opencv2/imgproc.hpp>
 
-#include "perception/binomial_blur.h"
-#include "perception/canny_edges.h"
-#include "perception/color_gradient.h"
-#include "perception/oriented_hough.h"
+#include "kernels/binomial_blur.h"
+#include "kernels/canny_edges.h"
+#include "kernels/color_gradient.h"
+#include "kernels/oriented_hough.h"
 
 namespace corridor {
 namespace {

@@ -6,10 +6,10 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "perception/binomial_blur.h"
-#include "perception/canny_edges.h"
-#include "perception/color_gradient.h"
-#include "perception/edge_scan.h"
+#include "kernels/binomial_blur.h"
+#include "kernels/canny_edges.h"
+#include "kernels/color_gradient.h"
+#include "kernels/edge_scan.h"
 
 namespace corridor {
 namespace {

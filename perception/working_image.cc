@@ -11,8 +11,8 @@
 #include <opencv2/imgproc.hpp>
 
 #include "core/cpu_features.h"
-#include "perception/binomial_rows.h"
-#include "perception/image_border.h"
+#include "kernels/binomial_rows.h"
+#include "kernels/image_border.h"
 
 namespace corridor {
 namespace {

@@ -9,8 +9,8 @@
 
 namespace corridor {
 
-// Which surface of the box model a ray meets first (geometry.md s3 and s6, plus the end wall when
-// known), for the per-pixel masks. The exact rasteriser has its own vectorised row loop.
+// Which surface of the box model a ray meets first (docs/geometry.md s3 and s6, plus the end wall
+// when known), for the per-pixel masks. The exact rasteriser has its own vectorised row loop.
 enum class BoxSurface { kNone, kFloor, kWall, kCeiling, kEndWall };
 
 struct BoxHit {

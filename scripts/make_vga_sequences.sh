@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Renders session 14's "VGA sequences" evaluation set: 8 scenes x 12 frames at 640x480, corridor
-# widths 1.6-3.2 m, ceilings 2.4-3.3 m, 60-90 degrees across, boxes, doors and floor/wall
+# Renders the "VGA sequences" evaluation set of docs/results.md: 8 scenes x 12 frames at 640x480,
+# corridor widths 1.6-3.2 m, ceilings 2.4-3.3 m, 60-90 degrees across, boxes, doors and floor/wall
 # contrasts varied, camera yaw, offset and pitch varied per scene.
 # Usage: bash scripts/make_vga_sequences.sh OUTPUT_DIR   (after scripts/build.sh)
 # Then e.g.: build/tools/corridor_eval --dataset=OUTPUT_DIR --sequence --threads=2

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Runs corridor_depth on the eleven real photographs of ../shared/data/real-corridors/ with the
+# Runs corridor_depth on the eleven real photographs of tests/data/real-corridors/ with the
 # cameras their README gives (popup_1: its uEye calibration; popup_2/3: the Kinect default;
 # rtabmap_*: --hfov=60), a 1.0 m camera height, prints the floor IoU of the three labelled frames,
 # and tiles the result panels into docs/real_photos_contact_sheet.png (Python 3 with PIL).
@@ -8,7 +8,7 @@ set -euo pipefail
 ROOT="$(cd "$(dirname "$0")/.." && pwd)"
 BUILD="${1:-$ROOT/build}"
 OUT="${2:-$ROOT/out/real_photos}"
-PHOTOS="$ROOT/../shared/data/real-corridors"
+PHOTOS="$ROOT/tests/data/real-corridors"
 TOOL="$BUILD/tools/corridor_depth"
 [ -x "$TOOL" ] || { echo "real_photos: build corridor_depth first ($TOOL)" >&2; exit 2; }
 rm -rf "$OUT"

@@ -2,8 +2,8 @@
 # Installs what is missing, builds the whole test suite with AddressSanitizer +
 # UndefinedBehaviorSanitizer (build-asan/, -O1) and runs it with ctest: any sanitizer report fails
 # the test that caused it. This is what CI's .ci/run calls.
-# CORRIDOR_SANITIZE=0 runs the same suite on the plain Release build (build/) instead: about
-# 3 min rather than 8 on 2 cores.
+# CORRIDOR_SANITIZE=0 runs the same suite on the plain Release build (build/) instead, in less
+# than half the time (docs/results.md, "Test suite").
 # Usage: bash scripts/run_tests.sh [extra ctest arguments]
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -61,7 +61,7 @@ Status RenderFrame(const CorridorScene& scene, const Camera& camera, const Camer
   Status status = CheckPose(scene.options, pose);
   if (!status.ok()) return status;
 
-  // Camera-from-corridor rotation (geometry.md: R_x(pitch) R_y(yaw), corridor Y down; the roll
+  // Camera-from-corridor rotation (docs/geometry.md: R_x(pitch) R_y(yaw), corridor Y down; the roll
   // about the optical axis comes last), built with Eigen; the world frame here has y up, hence
   // the flip.
   const Eigen::Matrix3d camera_from_corridor =

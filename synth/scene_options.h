@@ -39,7 +39,7 @@ struct SceneOptions {
   bool Check(std::string* why) const;
 };
 
-// Where the camera is, with the signs of geometry.md.
+// Where the camera is, with the signs of docs/geometry.md.
 struct CameraPose {
   double pitch = 0.0;     // theta > 0: pitched down, rad.
   double yaw = 0.0;       // phi > 0: the corridor axis appears right of cx, rad.

@@ -33,15 +33,18 @@
 #include "tools/input_source.h"
 #include "tools/progress.h"
 #include "tools/tool_flags.h"
+#include "tools/tool_help.h"
 
-DEFINE_string(input, "", "An image, a folder of images, or a dataset root");
+DEFINE_string(input, "", "An image, a folder of images, a dataset root, a ROS 1 bag or a video");
 DEFINE_string(output_dir, "", "Where the depth maps, pictures and geometry.csv go");
 DEFINE_bool(write_vis, true, "Write DIR/<scene>/vis/<frame>.png (input with lines beside depth)");
 DEFINE_double(vis_max_depth, 15.0, "Depth at the top of the colour scale in vis/, m");
 DEFINE_bool(write_floor_mask, false,
             "Write DIR/<scene>/floor/<frame>.png: the floor the geometry predicts (255 = floor)");
-DEFINE_bool(write_confidence, false,
-            "Write DIR/<scene>/confidence/<frame>.png: 255 where the box model explains the image");
+DEFINE_bool(write_model_fit, false,
+            "Write DIR/<scene>/model_fit/<frame>.png: 255 where the box model explains the image's "
+            "pixels (a per-pixel mask; not the frame's confidence, which geometry.csv gives)");
+DEFINE_bool(write_confidence, false, "Old name of --write_model_fit");
 DEFINE_bool(skip_existing, false,
             "Resume: skip frames whose depth PNG and geometry.csv row are already in the output");
 DEFINE_string(image_topic, "",
@@ -97,9 +100,9 @@ Status WriteFrame(const fs::path& scene_dir, const PipelineFrame& frame, const R
                            PredictFloorMask(*frame.camera, result.geometry, FLAGS_max_range));
       if (!written.ok()) return written;
     }
-    if (FLAGS_write_confidence && !result.image.empty()) {
+    if (FLAGS_write_model_fit && !result.image.empty()) {
       const Status written = WriteImageAtomic(
-          (scene_dir / "confidence" / (frame.name + ".png")).string(),
+          (scene_dir / "model_fit" / (frame.name + ".png")).string(),
           ComputeConfidenceMask(result.image, result.depth, *frame.camera, result.geometry));
       if (!written.ok()) return written;
     }
@@ -172,13 +175,13 @@ int RunScene(const InputScene& scene, const DepthRecoverer& recoverer, const std
     write_error = WriteCameraYaml((scene_dir / "camera_used.yaml").string(), scene.camera);
   }
   if (!write_error.ok()) {
-    std::fprintf(stderr, "corridor_depth: %s\n", write_error.ToString().c_str());
+    LOG(ERROR) << "corridor_depth: " << write_error.ToString();
     return -1;
   }
   std::unique_ptr<FrameSource> input;
   const Status opened = OpenFrameSource(scene, &input);
   if (!opened.ok()) {
-    std::fprintf(stderr, "corridor_depth: %s\n", opened.ToString().c_str());
+    LOG(ERROR) << "corridor_depth: " << opened.ToString();
     return -1;
   }
   std::unique_ptr<RayTable> rays;
@@ -248,8 +251,16 @@ int RunScene(const InputScene& scene, const DepthRecoverer& recoverer, const std
       const std::string where = scene.kind == InputKind::kImages
                                     ? scene.frames[position].rgb_path
                                     : scene.stream_path + " frame " + frame.name;
-      std::fprintf(stderr, "%sframe %s failed: %s\n", total > 1 ? "\n" : "", where.c_str(),
-                   frame.result.status.ToString().c_str());
+      progress.Break();
+      LOG(WARNING) << "frame " << where << " failed: " << frame.result.status.ToString();
+    }
+    if (VLOG_IS_ON(1)) {
+      const CorridorGeometry& g = frame.result.geometry;
+      LOG(INFO) << scene.name << "/" << frame.name << ": " << frame.result.status.ToString();
+      if (frame.result.has_geometry) {
+        LOG(INFO) << "  yaw " << g.yaw << " rad, pitch " << g.pitch << " rad, offset " << g.offset
+                  << " m, width " << g.width << " m, ceiling " << g.ceiling_height << " m";
+      }
     }
     GeometryCsv row;
     write_error = WriteFrame(scene_dir, frame, rays.get(), &row);
@@ -272,25 +283,35 @@ int RunScene(const InputScene& scene, const DepthRecoverer& recoverer, const std
   progress.Finish();
   if (write_error.ok()) write_error = write_csv();  // Every row, the kept ones included.
   if (!write_error.ok()) {
-    std::fprintf(stderr, "corridor_depth: cannot write output: %s\n",
-                 write_error.ToString().c_str());
+    LOG(ERROR) << "corridor_depth: cannot write output: " << write_error.ToString();
     return -1;
   }
   *frames = static_cast<int>(computed) + *skipped;
   return failed;
 }
 
+ToolInfo DepthToolInfo() {
+  ToolInfo info;
+  info.name = "corridor_depth";
+  info.summary = "dense metric depth from images of a corridor";
+  info.usage =
+      "corridor_depth --input=photo.jpg --hfov=60 --camera_height=1.2 --output_dir=out\n"
+      "corridor_depth --input=PATH --camera=camera.yaml --output_dir=DIR [--solver=NAME]\n"
+      "corridor_depth --input=run.bag --image_topic=T --camera_height=M --output_dir=DIR";
+  info.notes =
+      "--input is an image, a folder of images, a dataset root, a ROS 1 bag or a video. Writes, "
+      "per scene, DIR/<scene>/depth/<frame>.png (16-bit millimetres, 0 = no estimate), "
+      "DIR/<scene>/vis/<frame>.png and DIR/<scene>/geometry.csv. Exit code 0: every frame ok; "
+      "1: some frames without depth; 2: bad usage, found before any work.";
+  info.flag_files = {"corridor_depth_main.cc", "tool_flags.cc"};
+  info.aliases = {{"write_confidence", "write_model_fit"}};
+  return info;
+}
+
 int Main(int argc, char** argv) {
-  gflags::SetUsageMessage(
-      "corridor_depth --input=PATH --output_dir=DIR [--camera=FILE] [--camera_height=M] "
-      "[--solver=NAME] [--rasterizer=NAME] [--skip_existing] [--image_topic=T] "
-      "[--camera_info_topic=T] [--write_cloud] [--output_bag=FILE]\n"
-      "--input is an image, a folder of images, a dataset root, a ROS 1 bag or a video");
   RewriteBareSequenceFlag(argc, argv);
-  const Status flags = CheckFlagNames(argc, argv);
-  if (!flags.ok()) return Usage(flags.message());
-  gflags::ParseCommandLineFlags(&argc, &argv, true);
-  google::InitGoogleLogging(argv[0]);
+  int exit_code = 0;
+  if (!ParseToolFlags(DepthToolInfo(), &argc, &argv, &exit_code)) return exit_code;
   if (argc > 1) return Usage(std::string("unexpected argument '") + argv[1] + "'");
   if (FLAGS_input.empty()) {
     return Usage("--input is required (an image, a folder, a dataset, a ROS bag or a video)");
@@ -365,7 +386,7 @@ int Main(int argc, char** argv) {
   if (bag_writer) {
     status = bag_writer->Close();
     if (!status.ok()) {
-      std::fprintf(stderr, "corridor_depth: %s\n", status.ToString().c_str());
+      LOG(ERROR) << "corridor_depth: " << status.ToString();
       return 2;
     }
   }

@@ -23,6 +23,7 @@
 #include "tools/eval/report_writers.h"
 #include "tools/input_source.h"
 #include "tools/tool_flags.h"
+#include "tools/tool_help.h"
 
 DEFINE_string(dataset, "", "Dataset root (<scene>/rgb, <scene>/depth, truth.yaml), or images");
 DEFINE_string(output_dir, "", "Where report.md/json/csv, index.html, plots/, vis/, depth/ go");
@@ -122,15 +123,27 @@ void PrintSummary(const EvalReport& r) {
   std::printf("\n");
 }
 
+ToolInfo EvalToolInfo() {
+  ToolInfo info;
+  info.name = "corridor_eval";
+  info.summary = "evaluate depth and geometry against ground truth, with a report";
+  info.usage =
+      "corridor_eval --dataset=DIR --output_dir=OUT [--solver=NAME] [--rasterizer=NAME]\n"
+      "corridor_eval --dataset=DIR --output_dir=OUT --compare=joint:exact,grid:paper";
+  info.notes =
+      "Takes every option corridor_depth takes. Writes OUT/report.{md,json,csv}, OUT/index.html, "
+      "OUT/plots/, OUT/vis/ and OUT/depth/ (16-bit millimetres). Exit code 0: every frame "
+      "evaluated; 1: some frames failed (listed in the report); 2: bad usage, an output that "
+      "cannot be written, or nothing evaluated.";
+  info.flag_files = {"corridor_eval_main.cc", "tool_flags.cc"};
+  info.groups = {{"threads", FlagGroup::kAdvanced}};
+  return info;
+}
+
 int Main(int argc, char** argv) {
-  gflags::SetUsageMessage(
-      "corridor_eval --dataset=DIR --output_dir=OUT [--solver=NAME] [--rasterizer=NAME] "
-      "[--caps=5,40] [--threads=N] [--sequence] [--compare=solverA:rastA,solverB:rastB]");
   RewriteBareSequenceFlag(argc, argv);
-  const Status flags = CheckFlagNames(argc, argv);
-  if (!flags.ok()) return Usage(flags.message());
-  gflags::ParseCommandLineFlags(&argc, &argv, true);
-  google::InitGoogleLogging(argv[0]);
+  int exit_code = 0;
+  if (!ParseToolFlags(EvalToolInfo(), &argc, &argv, &exit_code)) return exit_code;
   if (argc > 1) return Usage(std::string("unexpected argument '") + argv[1] + "'");
   if (FLAGS_dataset.empty()) return Usage("--dataset is required (a dataset root)");
   // A dataset holds images: --sequence=auto runs each frame on its own.
@@ -201,15 +214,15 @@ int Main(int argc, char** argv) {
   std::printf("corridor_eval: report in %s/index.html\n", FLAGS_output_dir.c_str());
   const auto& failures = reports.front().failures;
   for (size_t i = 0; i < failures.size() && i < kMaxListedFailures; ++i) {
-    std::fprintf(stderr, "corridor_eval: %s/%s failed: %s\n", failures[i].scene.c_str(),
-                 failures[i].frame.c_str(), failures[i].reason.c_str());
+    LOG(WARNING) << "corridor_eval: " << failures[i].scene << "/" << failures[i].frame
+                 << " failed: " << failures[i].reason;
   }
   if (failures.size() > kMaxListedFailures) {
-    std::fprintf(stderr, "corridor_eval: ... and %zu more failed frames (see report.md)\n",
-                 failures.size() - kMaxListedFailures);
+    LOG(WARNING) << "corridor_eval: ... and " << failures.size() - kMaxListedFailures
+                 << " more failed frames (see report.md)";
   }
   if (evaluated == 0) {
-    std::fprintf(stderr, "corridor_eval: no frame could be evaluated\n");
+    LOG(ERROR) << "corridor_eval: no frame could be evaluated";
     return 2;
   }
   return failed > 0 ? 1 : 0;

@@ -15,6 +15,8 @@
 #include "synth/presets.h"
 #include "synth/real_buildings.h"
 #include "synth/sequence.h"
+#include "tools/progress.h"
+#include "tools/tool_help.h"
 
 DEFINE_string(preset, "sequence",
               "paper (9 scenes x 15 frames), real_buildings (see --real_class), sequence, or single");
@@ -26,7 +28,7 @@ DEFINE_int32(width_px, 640, "Image width, px (single, sequence)");
 DEFINE_int32(height_px, 480, "Image height, px (single, sequence)");
 DEFINE_double(fx, 0, "Focal length, px (0: from --hfov); fy = fx; principal point centred");
 DEFINE_double(hfov, 80, "Horizontal field of view when --fx is 0, degrees");
-DEFINE_double(hfov_deg, 0, "Old name of --hfov (warns); 0 = unset");
+DEFINE_double(hfov_deg, 80, "Old name of --hfov");
 DEFINE_double(corridor_width, 2.2, "Corridor width, m");
 DEFINE_double(ceiling_height, 2.7, "Ceiling height, m");
 DEFINE_double(length, 40, "Distance to the end wall, m");
@@ -124,17 +126,28 @@ bool MakeCustomPreset(synth::ScenePreset* preset, std::string* why) {
   return true;
 }
 
+ToolInfo SynthToolInfo() {
+  ToolInfo info;
+  info.name = "corridor_synth";
+  info.summary = "synthetic corridors with exact ground truth, in the dataset layout";
+  info.usage =
+      "corridor_synth --preset=paper --output_dir=D      (the paper's 9 scenes x 15 frames)\n"
+      "corridor_synth --preset=sequence --frames=30 --corridor_width=2.5 --output_dir=D\n"
+      "corridor_synth --preset=single --yaw=0.1 --pitch=0.05 --output_dir=D";
+  info.flag_files = {"corridor_synth_main.cc"};
+  for (const char* scene : {"paper_scale", "corridor_width", "ceiling_height", "length", "clutter",
+                            "door_density", "contrast", "seed"}) {
+    info.groups.emplace_back(scene, FlagGroup::kInput);
+  }
+  info.aliases = {{"hfov_deg", "hfov"}};
+  return info;
+}
+
 int Main(int argc, char** argv) {
-  gflags::SetUsageMessage(
-      "corridor_synth --preset=paper|real_buildings|sequence|single --output_dir=DIR");
-  gflags::ParseCommandLineFlags(&argc, &argv, true);
-  google::InitGoogleLogging(argv[0]);
+  int exit_code = 0;
+  if (!ParseToolFlags(SynthToolInfo(), &argc, &argv, &exit_code)) return exit_code;
   if (argc > 1) return Usage(std::string("unexpected argument '") + argv[1] + "'");
   if (FLAGS_output_dir.empty()) return Usage("--output_dir is required");
-  if (FLAGS_hfov_deg != 0) {
-    std::fprintf(stderr, "corridor_synth: --hfov_deg is now --hfov; taking %g\n", FLAGS_hfov_deg);
-    FLAGS_hfov = FLAGS_hfov_deg;
-  }
   std::vector<synth::ScenePreset> presets;
   if (FLAGS_preset == "paper") {
     if (!(FLAGS_paper_scale >= 0.25 && FLAGS_paper_scale <= 8)) {
@@ -160,10 +173,10 @@ int Main(int argc, char** argv) {
   }
   int frames = 0;
   for (const auto& preset : presets) {
-    const Status status = synth::WriteScene(FLAGS_output_dir, preset, [&](int done, int total) {
-      std::fprintf(stderr, "\r%s: %d/%d frames", preset.name.c_str(), done, total);
-      if (done == total) std::fputc('\n', stderr);
-    });
+    Progress progress(preset.name, static_cast<int>(preset.poses.size()));
+    const Status status = synth::WriteScene(FLAGS_output_dir, preset,
+                                            [&](int done, int /*total*/) { progress.Tick(done); });
+    progress.Finish();
     if (!status.ok()) return Usage(status.ToString());
     frames += static_cast<int>(preset.poses.size());
   }

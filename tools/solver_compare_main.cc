@@ -18,6 +18,7 @@
 #include "tools/input_source.h"
 #include "tools/progress.h"
 #include "tools/tool_flags.h"
+#include "tools/tool_help.h"
 
 DEFINE_string(output_dir, "", "Where solver_compare.{csv,md} and the plot go");
 DEFINE_string(solvers, "grid,closed_form,lm,joint,closed_form+lm",
@@ -74,7 +75,7 @@ std::vector<SolverCaseStats> RunSweeps(const std::vector<std::string>& names,
                                        const std::vector<double>& noise,
                                        const std::vector<double>& outliers) {
   std::vector<SolverCaseStats> rows;
-  Progress progress("sweeps", static_cast<int>(noise.size() * outliers.size()));
+  Progress progress("sweeps", static_cast<int>(noise.size() * outliers.size()), "cases");
   int done = 0;
   for (double f : outliers) {
     for (double sigma : noise) {
@@ -142,10 +143,28 @@ Status RunDataset(const std::vector<std::string>& names,
   return Status::Ok();
 }
 
+ToolInfo CompareToolInfo() {
+  ToolInfo info;
+  info.name = "solver_compare";
+  info.summary = "every solver on the same junction points: noise sweeps and dataset runs";
+  info.usage =
+      "solver_compare --output_dir=OUT [--solvers=grid,lm,...] [--noise=0,0.5,1,2,4]\n"
+      "solver_compare --output_dir=OUT --dataset=DIR --camera_height=M";
+  info.notes =
+      "Noise sweeps run on exact junction points of random corridors; --dataset adds a run on "
+      "detected junction lines (truth from truth.yaml), which takes corridor_depth's camera and "
+      "detection flags. Writes OUT/solver_compare.{csv,md} and OUT/width_error_vs_noise.png.";
+  info.flag_files = {"solver_compare_main.cc", "tool_flags.cc"};
+  info.groups = {{"noise", FlagGroup::kInput},
+                 {"outliers", FlagGroup::kInput},
+                 {"trials", FlagGroup::kInput},
+                 {"seed", FlagGroup::kInput}};
+  return info;
+}
+
 int Main(int argc, char** argv) {
-  gflags::SetUsageMessage("solver_compare --output_dir=OUT [--solvers=...] [--dataset=DIR]");
-  gflags::ParseCommandLineFlags(&argc, &argv, true);
-  google::InitGoogleLogging(argv[0]);
+  int exit_code = 0;
+  if (!ParseToolFlags(CompareToolInfo(), &argc, &argv, &exit_code)) return exit_code;
   if (argc > 1) return Usage(std::string("unexpected argument '") + argv[1] + "'");
   if (FLAGS_output_dir.empty()) return Usage("--output_dir is required");
   if (FLAGS_trials <= 0) return Usage("--trials must be positive");

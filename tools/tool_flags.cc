@@ -15,7 +15,8 @@ DEFINE_string(focal, "",
               "--hfov (else 60 deg) and says so");
 DEFINE_double(camera_height, 0.0, "Camera height above the floor, m; overrides the YAML key");
 DEFINE_string(solver, "joint",
-              "Solver: grid, closed_form, lm, or a chain such as closed_form+lm");
+              "Solver: joint (all four parameters at once), grid (the paper's search), "
+              "closed_form, lm, or a chain such as closed_form+lm");
 DEFINE_string(rasterizer, "exact", "Depth rasteriser: exact or paper");
 DEFINE_double(max_range, 40.0, "Depth beyond this gets no estimate, m");
 DEFINE_double(max_height, 2.5, "Without a ceiling, wall points higher than this get no estimate, m");
@@ -110,24 +111,6 @@ Status RecoverDepthOptionsFromFlags(RecoverDepthOptions* options) {
   options->min_confidence = FLAGS_min_confidence;
   std::unique_ptr<DepthRecoverer> probe;
   return DepthRecoverer::Create(*options, &probe);
-}
-
-Status CheckFlagNames(int argc, char** argv) {
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--") break;
-    if (arg.size() < 2 || arg[0] != '-') continue;  // A positional argument: the tool says so.
-    std::string name = arg.substr(arg[1] == '-' ? 2 : 1);
-    name = name.substr(0, name.find('='));
-    gflags::CommandLineFlagInfo info;
-    if (gflags::GetCommandLineFlagInfo(name.c_str(), &info)) continue;
-    if (name.rfind("no", 0) == 0 && gflags::GetCommandLineFlagInfo(name.c_str() + 2, &info) &&
-        info.type == "bool") {
-      continue;
-    }
-    return Status::InvalidArgument("unknown flag '" + arg + "' (see --help)");
-  }
-  return Status::Ok();
 }
 
 CameraOverrides CameraOverridesFromFlags() {

@@ -5,6 +5,7 @@
 #include "core/status.h"
 #include "pipeline/recover_depth.h"
 #include "tools/input_source.h"
+#include "tools/tool_help.h"  // CheckFlagNames
 
 // The flags every tool that recovers depth takes (corridor_depth, corridor_eval, ...).
 DECLARE_string(camera);
@@ -51,10 +52,5 @@ Status ResolveSequence(bool stream, bool* sequence);
 // Call first: a bare --sequence (or --nosequence), as the flag was once a boolean, becomes
 // --sequence=true (false), since gflags would take the next argument as a string flag's value.
 void RewriteBareSequenceFlag(int argc, char** argv);
-
-// Call before gflags::ParseCommandLineFlags: an unknown flag is bad usage (the tools exit 2), but
-// gflags itself would exit 1 on it. InvalidArgument naming the first unknown flag; "--" ends the
-// flags; "--noNAME" is accepted for a boolean NAME.
-Status CheckFlagNames(int argc, char** argv);
 
 }  // namespace corridor

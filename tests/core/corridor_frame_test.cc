@@ -8,7 +8,7 @@
 namespace corridor {
 namespace {
 
-// The rotation built by hand from geometry.md, compared with Eigen's angle-axis composition.
+// The rotation built by hand from docs/geometry.md, compared with Eigen's angle-axis composition.
 TEST(CorridorFrameTest, MatchesEigenComposition) {
   const double pitch = 0.13, yaw = -0.21;
   const CorridorRotation<double> r(pitch, yaw);

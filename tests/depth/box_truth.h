@@ -1,6 +1,6 @@
 #pragma once
 
-// Hand-written depth of the corridor box for one pixel, from geometry.md section 3, using
+// Hand-written depth of the corridor box for one pixel, from docs/geometry.md section 3, using
 // Eigen's rotations (independent of the rasterisers' code).
 
 #include <algorithm>

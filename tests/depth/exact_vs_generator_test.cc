@@ -1,4 +1,4 @@
-// Issue 5's check: with the true geometry, the exact rasteriser reproduces the generator's ray
+// With the true geometry, the exact rasteriser reproduces the generator's ray
 // caster on a pure box corridor (no clutter, no doors), to within the 1 mm of the depth PNG.
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // BinomialBlur against a direct 2-D convolution written here: the outer product of the binomial
 // kernel, reflected borders by cv::borderInterpolate, the exact integer sum rounded half up.
-#include "perception/binomial_blur.h"
+#include "kernels/binomial_blur.h"
 
 #include <gtest/gtest.h>
 #include <opencv2/core.hpp>

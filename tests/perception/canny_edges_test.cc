@@ -1,7 +1,7 @@
 // CannyFromGradients against OpenCV's own cv::Canny on the same derivatives: random derivatives in
 // a small range (many ties, every direction), the Sobel derivatives of a generated corridor, both
 // magnitudes, thresholds that are not integers, and images of one row or column.
-#include "perception/canny_edges.h"
+#include "kernels/canny_edges.h"
 
 #include <gtest/gtest.h>
 #include <opencv2/imgproc.hpp>

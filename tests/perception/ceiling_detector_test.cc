@@ -44,7 +44,7 @@ TEST(CeilingDetectorTest, FindsTheCeilingHeightOfGeneratedCorridors) {
   EXPECT_EQ(checked, 6);
 }
 
-// Issue 5's ceiling criterion for the search itself: given the walls, every paper-preset scene
+// The ceiling criterion for the search itself: given the walls, every paper-preset scene
 // (the hard ones too: clutter, doors, glossy floors), every third frame, within 3%.
 TEST(CeilingDetectorTest, EveryPaperSceneWithinThreePercentGivenTheWalls) {
   int checked = 0;

@@ -1,4 +1,4 @@
-#include "perception/color_gradient.h"
+#include "kernels/color_gradient.h"
 
 #include <random>
 

@@ -1,6 +1,6 @@
 // ForEachEdgePixel against cv::findNonZero (row-major, the same order) on sparse and dense maps
 // of any non-zero values, widths that are and are not multiples of eight; NonZeroBytes by hand.
-#include "perception/edge_scan.h"
+#include "kernels/edge_scan.h"
 
 #include <vector>
 

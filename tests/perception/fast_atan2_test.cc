@@ -1,6 +1,6 @@
 // FastAtan2 against cv::fastAtan2 itself: every gradient a 3x3 Sobel of 8-bit pixels can give
 // (|gx|, |gy| <= 1020, both signs), and random floats of any size.
-#include "perception/fast_atan2.h"
+#include "kernels/fast_atan2.h"
 
 #include <gtest/gtest.h>
 #include <opencv2/core.hpp>

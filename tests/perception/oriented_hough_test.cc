@@ -1,7 +1,7 @@
 // OrientedHoughSegments: the sides of a drawn polygon are found where the polygon's vertices say
 // they are; an edge pixel's vote follows its gradient; no call leaks into the next.
 
-#include "perception/oriented_hough.h"
+#include "kernels/oriented_hough.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// The detector on the real corridor photographs of ../shared/data/real-corridors/.
+// The detector on the real corridor photographs of tests/data/real-corridors/.
 #include <string>
 
 #include <gtest/gtest.h>
@@ -9,7 +9,7 @@
 namespace corridor {
 namespace {
 
-const std::string kDir = std::string(CORRIDOR_SHARED_DIR) + "/data/real-corridors/";
+const std::string kDir = std::string(CORRIDOR_SOURCE_DIR) + "/tests/data/real-corridors/";
 
 const char* const kPhotos[] = {"rtabmap_1.jpg", "rtabmap_2.jpg", "rtabmap_3.jpg", "rtabmap_4.jpg",
                                "rtabmap_5.jpg", "rtabmap_6.jpg", "rtabmap_7.jpg", "rtabmap_8.jpg",
@@ -25,8 +25,8 @@ bool Plausible(const JunctionPair& pair, const cv::Size& size) {
 }
 
 // A regression floor for the photographs: both junctions, with the right slopes and the
-// vanishing point above them, on all 11 (measured: 9 at issue 10, 10 from session 13 on, 11 since
-// session 17's second Hough look found rtabmap_6's right junction, broken by door bottoms).
+// vanishing point above them, on all 11 (rtabmap_6's right junction, broken by door bottoms, is
+// found by the detector's second, relaxed Hough look).
 TEST(RealPhotosTest, BothJunctionsOnMostPhotos) {
   int found = 0;
   for (const char* name : kPhotos) {

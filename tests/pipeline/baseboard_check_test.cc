@@ -1,13 +1,10 @@
 // The ceiling as referee of the baseboard rule (and of the recess alternative, at the end). On
-// frame 1 of the paper preset's Cord_H03 (20 cm
-// further along since session 7, where the ceiling search's blur became binomial and frame 1's
-// left ceiling junction fell just short of the compared rule's support) the left junction's pair
-// choice takes the top of the baseboard, and the width comes out 11% too wide; the two ceiling
-// junctions, each searched alone, then disagree. With the lower parallel
-// line they agree, and the geometry follows the generator's truth. (Until session 5 this was
-// frame 0 of Cord_E01, which the oriented Hough transform now gets right without the check.)
-// Since session 7 the junction detector's band test (baseboard_band_test.cc) takes the lower line
-// of these frames itself; it is off here, so that the ceiling is the only referee.
+// frame 1 of the paper preset's Cord_H03, moved 20 cm further along (so that its left ceiling
+// junction is within the compared rule's support), the left junction's pair choice takes the top
+// of the baseboard, and the width comes out 11% too wide; the two ceiling junctions, each searched
+// alone, then disagree. With the lower parallel line they agree, and the geometry follows the
+// generator's truth. The junction detector's band test (baseboard_band_test.cc) would take the
+// lower line of these frames itself; it is off here, so that the ceiling is the only referee.
 #include <gtest/gtest.h>
 
 #include "benchmarks/bench_frames.h"
@@ -108,8 +105,7 @@ TEST(BaseboardCheckTest, ALowerLineThatMakesTheCeilingAgreeIsTakenWhenNoneWasCom
 // outscores the wall's own junction (long, but with the recess's floor above part of it) in the
 // pair choice, and the width comes out about 13% too wide at 1280x720. The wall's junction lies
 // beyond a baseboard's angle from it; the two ceiling sides disagree, and with the wall's line
-// they agree. (Frame 1 of the corridor benchmarks' drive at 1280x720, benchmarks/bench_frames.h;
-// until session 13, whose Hough draws in another order, frame 0 showed it.)
+// they agree. (Frame 1 of the corridor benchmarks' drive at 1280x720, benchmarks/bench_frames.h.)
 TEST(BaseboardCheckTest, ARecessLineGivesWayToTheWallsJunction) {
   const bench::BenchFrame& input = bench::PaperLikeFrame(1280, 720, 1);
   const synth::Frame& frame = input.frame;
@@ -123,7 +119,7 @@ TEST(BaseboardCheckTest, ARecessLineGivesWayToTheWallsJunction) {
   EXPECT_NE(checked.fallback.find("recess"), std::string::npos) << checked.fallback;
 }
 
-// Frames 1-2 of the paper preset's Cord_E02 (1-3 until session 13's Hough order): door recesses
+// Frames 1-2 of the paper preset's Cord_E02: door recesses
 // in the near left wall; the pair choice takes a recess's short floor line (with the door above
 // it) over the wall's junction (about half its boundary score, 10 degrees below it), 15-17% too
 // wide. The ceiling decides for the wall's line.

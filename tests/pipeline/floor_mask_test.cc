@@ -1,6 +1,6 @@
 // The predicted floor against the hand-labelled floor masks of the real photographs, with the
 // intrinsics their README gives and the 1.0 m camera height their source assumes; and against
-// the generator's floor on synthetic frames; and issue 10's geometry bar on all eleven photos.
+// the generator's floor on synthetic frames; and a plausible geometry on all eleven photos.
 #include "pipeline/floor_mask.h"
 
 #include <cmath>
@@ -17,7 +17,7 @@
 namespace corridor {
 namespace {
 
-const std::string kDir = std::string(CORRIDOR_SHARED_DIR) + "/data/real-corridors/";
+const std::string kDir = std::string(CORRIDOR_SOURCE_DIR) + "/tests/data/real-corridors/";
 
 Camera PhotoCamera(int width, int height, double fx, double fy, double cx, double cy) {
   Camera c;
@@ -35,8 +35,7 @@ TEST(FloorMaskTest, IoUOnTheLabelledPhotos) {
   struct Labelled {
     const char* name;
     Camera camera;
-    double min_iou;  // Issue 10's targets. Measured 0.833 (0.515 before the pair choice weighed
-                     // the widest opening over the floor's appearance), 0.931, 0.832.
+    double min_iou;  // The lowest IoU accepted (docs/results.md gives the measured ones).
   };
   const Labelled photos[] = {
       {"popup_1", PhotoCamera(640, 512, 371.975, 372.164, 315.632, 250.593), 0.75},
@@ -104,7 +103,7 @@ TEST(FloorMaskTest, AnEndWallEndsTheFloor) {
   EXPECT_GT(closed, open + 0.01);
 }
 
-// Issue 10's bar on all eleven photographs, through the whole pipeline with the same cameras
+// A plausible corridor on all eleven photographs, through the whole pipeline with the same cameras
 // (rtabmap_*: a 60-degree field of view) and a 1.0 m camera height: both junctions on at least
 // 10 of the 11, each with a width between 1 and 6 m and a pitch within +-20 degrees.
 TEST(RealPhotosGeometryTest, BothJunctionsAndAPlausibleCorridorOnTenOfEleven) {

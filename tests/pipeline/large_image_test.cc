@@ -2,7 +2,7 @@
 // times the pixels (1260x1080, corridor_synth --paper_scale=3), where the floor's grout lines and
 // their shadows are resolved. The junction search halves the image; its appearance probes must
 // reach as far into the scene as at the paper's size, or a grout line's shadow passes for the
-// wall above a junction and both walls come out 9-12% too near (session 9). The width must follow
+// wall above a junction and both walls come out 9-12% too near. The width must follow
 // the generator's truth.
 #include <cmath>
 #include <string>

@@ -1,4 +1,4 @@
-// One junction hidden (issue 10): a generated corridor cropped so that the right junction is out
+// One junction hidden: a generated corridor cropped so that the right junction is out
 // of the image. Without a known width the frame fails cleanly (no made-up second line); with a
 // width prior, or the previous frame's width in a sequence, the geometry and the depth follow
 // the generator's truth.

@@ -40,8 +40,8 @@ HiddenJunction MakeHiddenJunction() {
   return h;
 }
 
-// The defaults without the inner-line check, which since session 6 finds this frame's right wall
-// on its own (its ceiling junction): off, so that the width hold is what these tests see.
+// The defaults without the inner-line check, which finds this frame's right wall on its own (its
+// ceiling junction): off, so that the width hold is what these tests see.
 RecoverDepthOptions HoldOptions() {
   RecoverDepthOptions options;
   options.ceiling_checks_inner_lines = false;

@@ -1,8 +1,8 @@
-// Corrupt bags never crash the caller (issue 9 for the bag input of issue 8). rosbag_storage reads
-// out of bounds on some damaged bags (found by overwriting random bytes of a valid bag: seed 281
-// below makes it SIGSEGV inside Bag::readHeaderFromBuffer), so io/rosbag_io.cc reads bags in a
-// forked child (io/isolated_child.h). These tests check the mechanism with a child that crashes
-// on purpose, and the bag reader on byte-mutated bags written by python3-rosbag.
+// Corrupt bags never crash the caller. rosbag_storage reads out of bounds on some damaged bags
+// (found by overwriting random bytes of a valid bag: seed 281 below makes it SIGSEGV inside
+// Bag::readHeaderFromBuffer), so io/rosbag_io.cc reads bags in a forked child
+// (io/isolated_child.h). These tests check the mechanism with a child that crashes on purpose, and
+// the bag reader on byte-mutated bags written by python3-rosbag.
 
 #include <signal.h>
 

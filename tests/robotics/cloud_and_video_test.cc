@@ -1,4 +1,4 @@
-// corridor_depth's --write_cloud and video input (issue 8): PLY files read back by a parser
+// corridor_depth's --write_cloud and video input: PLY files read back by a parser
 // written here, and their points lie on the ray caster's corridor; a video written with OpenCV's
 // VideoWriter goes through the tool like its decoded frames in a folder.
 

@@ -1,6 +1,6 @@
 #pragma once
 
-// Test material of the robotics input/output tests (issue 8): generated corridor frames (the
+// Test material of the robotics input/output tests: generated corridor frames (the
 // independent box ray caster of tests/depth/box_truth.h via tests/tools/eval_test_dataset.h), and
 // ROS 1 bags written from them by the real rosbag library (Debian's python3-rosbag, driven by
 // tests/robotics/write_test_bag.py), never by the code under test.

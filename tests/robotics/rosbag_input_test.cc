@@ -1,4 +1,4 @@
-// corridor_depth on ROS 1 bags (issue 8): a bag written by the real rosbag library (python3-rosbag)
+// corridor_depth on ROS 1 bags: a bag written by the real rosbag library (python3-rosbag)
 // gives the same depth maps as the same frames in a folder, in every supported encoding; bad bags
 // get a clear message and exit code 2, never a crash.
 

@@ -1,4 +1,4 @@
-// corridor_depth --output_bag (issue 8): the depth bag reads back with the real rosbag library
+// corridor_depth --output_bag: the depth bag reads back with the real rosbag library
 // (topics, types, encodings, stamps, frame_id, pixels, CameraInfo).
 
 #include <rosbag/bag.h>

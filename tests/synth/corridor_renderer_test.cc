@@ -1,4 +1,4 @@
-// The generator's ground truth against depths computed by hand from geometry.md, section 3.
+// The generator's ground truth against depths computed by hand from docs/geometry.md, section 3.
 #include "synth/corridor_renderer.h"
 
 #include <cmath>
@@ -31,7 +31,7 @@ SceneOptions PlainBox() {
   return o;
 }
 
-// geometry.md by hand: n = (0, cos t, sin t), m = (cos p, sin t sin p, -cos t sin p).
+// docs/geometry.md by hand: n = (0, cos t, sin t), m = (cos p, sin t sin p, -cos t sin p).
 struct HandModel {
   double t, p, h, d_left, d_right;
   double NDotR(double /*x*/, double y) const { return std::cos(t) * y + std::sin(t); }

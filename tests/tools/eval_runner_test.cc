@@ -68,8 +68,8 @@ TEST(EvaluateScenes, ASequenceHoldsAWidthThatNarrows) {
   ASSERT_TRUE(found);
   std::vector<InputScene> scenes;
   ASSERT_TRUE(ResolveInput(dir.Path("data"), CameraOverrides(), &scenes).ok());
-  // Without the inner-line check, which since session 6 finds frame 10's right wall on its own
-  // (its ceiling junction): the sequence's width hold is what this test is about.
+  // Without the inner-line check, which finds frame 10's right wall on its own (its ceiling
+  // junction): the sequence's width hold is what this test is about.
   RecoverDepthOptions options;
   options.ceiling_checks_inner_lines = false;
   std::unique_ptr<DepthRecoverer> recoverer;

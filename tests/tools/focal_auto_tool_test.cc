@@ -1,4 +1,4 @@
-// corridor_depth --focal=auto (issue 10) on generated corridors with doors and tile grout: the
+// corridor_depth --focal=auto on generated corridors with doors and tile grout: the
 // focal length it records in camera_used.yaml is the generator camera's within 3%; without a
 // second vanishing point it falls back to --hfov and says so; bad combinations exit 2.
 

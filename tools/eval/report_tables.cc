@@ -91,7 +91,7 @@ TextTable DepthTable(const EvalReport& r, size_t cap_index) {
     AddRow(&t, cells, IsSummary(r, g));
   }
   t.note =
-      "Per-image metrics averaged over the images (geometry.md section 7). RMSElog uses "
+      "Per-image metrics averaged over the images (docs/geometry.md section 7). RMSElog uses "
       "log10 as the paper prints it; RMSElog (ln) is the standard one. A failed image "
       "counts with coverage 0.";
   return t;

@@ -1,4 +1,4 @@
-#include "perception/color_gradient.h"
+#include "kernels/color_gradient.h"
 
 #include <algorithm>
 #include <cstdlib>
@@ -6,7 +6,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "core/cpu_features.h"
-#include "perception/image_border.h"
+#include "kernels/image_border.h"
 
 namespace corridor {
 namespace {
@@ -165,8 +165,8 @@ void ColorGradient(const cv::Mat& image, cv::Mat* dx, cv::Mat* dy, std::vector<i
   const int rows = image.rows, cols = image.cols, n = image.channels();
   // Each image row's channels, split once into one of three planar rows: the rows above, at and
   // below the current one (Reflect101 at the borders) are always in distinct slots, so nothing is
-  // split twice and the planes stay in the cache (cv::split of the whole image first made a
-  // 420x360 frame of the pipeline 0.3 ms slower, of 3.3 ms).
+  // split twice and the planes stay in the cache (cv::split of the whole image first is slower:
+  // docs/results.md, "Image kernels").
   std::vector<uchar> plane_rows(static_cast<size_t>(3) * n * cols);
   uchar* planes[3][4];
   int slot_row[3] = {-1, -1, -1};

@@ -1,4 +1,4 @@
-#include "perception/canny_edges.h"
+#include "kernels/canny_edges.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "core/cpu_features.h"
-#include "perception/edge_scan.h"
+#include "kernels/edge_scan.h"
 
 #ifdef CORRIDOR_AVX2_VARIANTS
 #include <immintrin.h>

@@ -9,7 +9,7 @@
 #include <cstdint>
 
 #include "core/cpu_features.h"
-#include "perception/image_border.h"
+#include "kernels/image_border.h"
 
 namespace corridor {
 namespace binomial {

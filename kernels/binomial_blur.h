@@ -10,9 +10,9 @@ namespace corridor {
 // columns and rows: `taps` 3 gives [1 2 1] / 4 (a Gaussian of sigma 0.71), 5 gives
 // [1 4 6 4 1] / 16 (sigma 1.0), in integers, rounded half up. Rows just outside [from, to) are
 // read where the image has them, as cv::GaussianBlur reads around a view; the image's own
-// borders are reflected (BORDER_REFLECT_101). `out` gets to - from rows. With AVX2, 5 taps over
-// 640x240 colour pixels take 69 us against cv::GaussianBlur's 240 us for sigma 1 (its 7-tap
-// float kernel on a view; one core of the 2.6 GHz EPYC this was written on).
+// borders are reflected (BORDER_REFLECT_101). `out` gets to - from rows. Integer taps (AVX2 where
+// the CPU has it) make it cheaper than cv::GaussianBlur, which takes a 7-tap float kernel on a
+// view for sigma 1 (docs/results.md, "Image kernels").
 // InvalidArgument for another depth or channel count, taps other than 3 and 5, or an empty or
 // out-of-range row range.
 Status BinomialBlur(const cv::Mat& image, int from, int to, int taps, cv::Mat* out);

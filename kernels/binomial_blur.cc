@@ -1,4 +1,4 @@
-#include "perception/binomial_blur.h"
+#include "kernels/binomial_blur.h"
 
 #include <cstdint>
 #include <vector>
@@ -6,8 +6,8 @@
 #include <opencv2/imgproc.hpp>
 
 #include "core/cpu_features.h"
-#include "perception/binomial_rows.h"
-#include "perception/image_border.h"
+#include "kernels/binomial_rows.h"
+#include "kernels/image_border.h"
 
 namespace corridor {
 namespace {

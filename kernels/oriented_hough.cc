@@ -1,4 +1,4 @@
-#include "perception/oriented_hough.h"
+#include "kernels/oriented_hough.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,8 +7,8 @@
 
 #include <opencv2/core.hpp>
 
-#include "perception/edge_scan.h"
-#include "perception/fast_atan2.h"
+#include "kernels/edge_scan.h"
+#include "kernels/fast_atan2.h"
 #ifdef __SSE2__
 #include <emmintrin.h>
 #endif
