@@ -27,21 +27,20 @@ struct VerticalCrossings {
 struct VerticalCrossingOptions {
   double band_height = 0.25;  // How far above (and as far in pixels below) the junction to look, m on the wall.
   double min_band_px = 5;     // Junction points whose band is shorter are not examined, px.
+  double max_band_px = 24;    // Longer bands (near the camera) are cut to this, px.
+  double min_step = 8;        // An edge is a step of at least this many grey levels in each channel.
   double min_run = 0.7;       // A vertical edge must cover this fraction of a band.
   double min_contrast_ratio = 0.7;  // Below the junction, an edge of less than this fraction of the contrast above is a reflection.
-  int step_px = 1;            // Junction points every this many pixels.
+  int step_px = 2;            // Junction points every this many pixels.
   bool Check(std::string* why) const;
 };
 
-// The crossings of the junction of `side` (0 left, 1 right) that `geometry` puts on the wall, over
-// the extent of `line` (raw pixels of the full image; `scale` full-image pixels per pixel of
-// `bgr`), in `bgr` seen by `camera` (of bgr's size). `edges`: null, or the frame's edges of `bgr`
-// (oriented_edges.h), extended as needed.
-struct ImageEdges;
+// The crossings of the floor/wall junction that `geometry` puts on a wall, over the extent of
+// `line` (raw pixels of the full image; `scale` full-image pixels per pixel of `bgr`), in the
+// 8-bit BGR `bgr` seen by `camera` (of bgr's size). The gradients are computed only on the bands
+// examined (a few thousand pixels), from the colour image's channel sum.
 VerticalCrossings CountVerticalCrossings(const cv::Mat& bgr, const Camera& camera, int scale,
-                                         const CorridorGeometry& geometry, int side,
-                                         const JunctionLine& line,
-                                         const VerticalCrossingOptions& options,
-                                         ImageEdges* edges = nullptr);
+                                         const CorridorGeometry& geometry, const JunctionLine& line,
+                                         const VerticalCrossingOptions& options);
 
 }  // namespace corridor

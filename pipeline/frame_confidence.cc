@@ -51,9 +51,10 @@ double FrameConfidence(const FrameEvidence& e, std::string* why) {
     factor(0.9, std::string("the ") + side_name[e.moved_side] +
                     " wall was moved out to where its ceiling junction agrees with the other's");
   }
-  // Ceiling: two sides that disagree by 10% or more put one wall at a wrong distance.
+  // Ceiling: two sides that disagree put one wall at a wrong distance, or the ceiling junctions
+  // were misread (a window band, a glass wall's room behind, a steep view): it weighs less.
   if (e.ceiling_disagreement >= 0) {
-    factor(1.0 - 0.7 * Ramp(e.ceiling_disagreement, 0.08, 0.25),
+    factor(1.0 - 0.4 * Ramp(e.ceiling_disagreement, 0.1, 0.3),
            Format("the two ceiling sides disagree by %.0f%%: a junction is not the floor's edge",
                   100 * (std::exp(e.ceiling_disagreement) - 1)));
   }

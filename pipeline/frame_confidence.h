@@ -12,10 +12,6 @@ struct FrameEvidence {
   // boundary score times its support length, JunctionLine::confidence); -1 when the side has no
   // line (one junction and a known width).
   double junction[2] = {-1, -1};
-  // Per side: the fraction of the reported floor/wall junction (of the final geometry, after any
-  // correction) that lies on image edges running along it, as the ceiling search judges its lines;
-  // -1 when not measured. A junction is on an edge nearly all the way.
-  double line_support[2] = {-1, -1};
   // |log| of the ratio of the two ceiling sides' heights above the camera, each side searched
   // alone: a wrong wall distance scales its side's height. -1 when they cannot be compared (no
   // ceiling in view, or a side too weak).
@@ -27,8 +23,7 @@ struct FrameEvidence {
   // lower parallel line taken, or walls scaled to a held ceiling.
   bool corrected = false;
   // The side whose wall the inner-line check moved out to where its ceiling junction agrees with
-  // the other side's (0 left, 1 right; -1 none): its floor junction is then a hypothesis, which
-  // the image should show (line_support).
+  // the other side's (0 left, 1 right; -1 none): the geometry then rests on the ceiling's evidence.
   int moved_side = -1;
 };
 

@@ -512,13 +512,9 @@ Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* res
     if (lines[s] == nullptr) continue;
     evidence.junction[s] = lines[s]->confidence;
     if (!search.bgr.empty()) {
-      const double wall_x = s == 0 ? -geometry.LeftDistance() : geometry.RightDistance();
-      evidence.line_support[s] =
-          CorridorLineSupport(search.bgr, search.camera, geometry, wall_x, geometry.camera_height,
-                              options_.ceiling, &edges);
-      evidence.crossings[s] =
-          CountVerticalCrossings(search.bgr, search.camera, search.scale, geometry, s, *lines[s],
-                                 options_.vertical_crossings, &edges);
+      evidence.crossings[s] = CountVerticalCrossings(search.bgr, search.camera, search.scale,
+                                                     geometry, *lines[s],
+                                                     options_.vertical_crossings);
     }
   }
   evidence.ceiling_disagreement =

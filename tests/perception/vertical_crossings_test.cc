@@ -55,8 +55,8 @@ class VerticalCrossingsTest : public ::testing::Test {
 TEST_F(VerticalCrossingsTest, DoorFramesStopAtTheTrueJunction) {
   for (int side = 0; side < 2; ++side) {
     const JunctionLine line = Extent(frame_.truth, camera_, side, 2.0, 14.0);
-    const VerticalCrossings c = CountVerticalCrossings(frame_.bgr, camera_, 1, frame_.truth, side,
-                                                       line, VerticalCrossingOptions());
+    const VerticalCrossings c = CountVerticalCrossings(frame_.bgr, camera_, 1, frame_.truth, line,
+                                                       VerticalCrossingOptions());
     EXPECT_GE(c.reaching, 2) << "side " << side;
     EXPECT_LE(c.CrossingFraction(), 0.25) << "side " << side << ": " << c.crossing << " of "
                                           << c.reaching;
@@ -76,7 +76,7 @@ TEST_F(VerticalCrossingsTest, DoorFramesCrossALineOfTheWallTakenForTheJunction) 
     }
     const JunctionLine line = Extent(wrong, camera_, side, 2.0 * k, 14.0 * k);
     const VerticalCrossings c =
-        CountVerticalCrossings(frame_.bgr, camera_, 1, wrong, side, line, VerticalCrossingOptions());
+        CountVerticalCrossings(frame_.bgr, camera_, 1, wrong, line, VerticalCrossingOptions());
     EXPECT_GE(c.reaching, 2) << "side " << side;
     EXPECT_GE(c.CrossingFraction(), 0.6) << "side " << side << ": " << c.crossing << " of "
                                          << c.reaching;
@@ -91,11 +91,11 @@ TEST(VerticalCrossings, NothingOnAnEmptyImageOrABadOption) {
   line.near_end = {50, 230};
   line.far_end = {150, 130};
   const VerticalCrossings none =
-      CountVerticalCrossings(cv::Mat(), camera, 1, g, 0, line, VerticalCrossingOptions());
+      CountVerticalCrossings(cv::Mat(), camera, 1, g, line, VerticalCrossingOptions());
   EXPECT_EQ(none.samples, 0);
   const cv::Mat flat(240, 320, CV_8UC3, cv::Scalar(90, 90, 90));
   const VerticalCrossings flat_count =
-      CountVerticalCrossings(flat, camera, 1, g, 0, line, VerticalCrossingOptions());
+      CountVerticalCrossings(flat, camera, 1, g, line, VerticalCrossingOptions());
   EXPECT_GT(flat_count.samples, 0);
   EXPECT_EQ(flat_count.reaching, 0);
   VerticalCrossingOptions bad;

@@ -98,7 +98,7 @@ std::string ReportCsv(const std::vector<EvalReport>& configs) {
                                      "true_width", "width_rel_error", "est_ceiling_height",
                                      "true_ceiling_height", "ceiling_visible", "junctions_tracked",
                                      "confidence", "left_junction", "right_junction",
-                                     "left_support", "right_support", "left_crossing",
+                                     "left_crossing",
                                      "left_reaching", "right_crossing", "right_reaching",
                                      "ceiling_disagreement", "moved_side"};
   const std::vector<double> caps = configs.empty() ? std::vector<double>() : configs[0].caps;
@@ -126,8 +126,7 @@ std::string ReportCsv(const std::vector<EvalReport>& configs) {
       row.push_back(f.has_truth ? (f.ceiling_visible ? "1" : "0") : "");
       row.push_back(f.junctions_tracked ? "1" : "0");
       const FrameEvidence& e = f.evidence;
-      for (double v : {f.confidence, e.junction[0], e.junction[1], e.line_support[0],
-                       e.line_support[1]}) {
+      for (double v : {f.confidence, e.junction[0], e.junction[1]}) {
         row.push_back(f.ran ? CsvNumber(v) : "");
       }
       for (int v : {e.crossings[0].crossing, e.crossings[0].reaching, e.crossings[1].crossing,
