@@ -1,0 +1,481 @@
+// corridor_depth_node live, end to end: a ROS master of its own on a free loopback port, the node,
+// and this test as camera and consumer. A generated 30-frame corridor sequence goes in, each frame
+// after the previous depth came back, with bad frames in the middle; the depth, its camera_info
+// and points that come back are checked against the generator's truth, against corridor_depth on
+// the same frames, and against points made here from the message definitions alone.
+
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <mutex>
+#include <set>
+
+#include <diagnostic_msgs/DiagnosticArray.h>
+#include <diagnostic_msgs/DiagnosticStatus.h>
+#include <gtest/gtest.h>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+#include <ros/ros.h>
+#include <sensor_msgs/CameraInfo.h>
+#include <sensor_msgs/Image.h>
+#include <sensor_msgs/PointCloud2.h>
+#include <tf2_msgs/TFMessage.h>
+
+#include "evaluation/depth_metrics.h"
+#include "io/camera_yaml.h"
+#include "io/image_io.h"
+#include "ros/tests/ros_test_process.h"
+
+namespace corridor {
+namespace testing_util {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+const std::string kNode = CORRIDOR_BINARY_DIR "/ros/corridor_depth_node";
+const std::string kSynth = CORRIDOR_BINARY_DIR "/tools/corridor_synth";
+const std::string kDepthTool = CORRIDOR_BINARY_DIR "/tools/corridor_depth";
+constexpr int kFrames = 30;
+constexpr char kFrameId[] = "cam_optical";
+
+// A folder of its own under the test temp dir, removed at the end.
+struct Scratch {
+  Scratch() {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    root = fs::path(::testing::TempDir()) /
+           (std::string("corridor_node_") + info->name() + "_" + std::to_string(::getpid()));
+    fs::remove_all(root);
+    fs::create_directories(root);
+  }
+  ~Scratch() {
+    std::error_code ec;
+    fs::remove_all(root, ec);
+  }
+  std::string Path(const std::string& relative) const { return (root / relative).string(); }
+  fs::path root;
+};
+
+// Runs a tool to completion; its exit code (-1 when it did not exit normally).
+int RunToCompletion(const std::vector<std::string>& argv, const std::string& log) {
+  ChildProcess child(argv, log);
+  if (!child.started()) return -1;
+  for (int i = 0; i < 6000 && child.Running(); ++i) {  // At most 10 minutes.
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  const int status = child.Stop();
+  return status >= 0 && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+std::string ReadText(const std::string& path) {
+  std::ifstream in(path);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+// A 32FC1 or 16UC1 depth message as CV_32F metres, 0 = none: written against the message
+// definition (little-endian rows of `step` bytes).
+cv::Mat DepthFromMessage(const sensor_msgs::Image& image) {
+  cv::Mat depth(static_cast<int>(image.height), static_cast<int>(image.width), CV_32F);
+  for (int r = 0; r < depth.rows; ++r) {
+    for (int c = 0; c < depth.cols; ++c) {
+      const uint8_t* p = image.data.data() + static_cast<size_t>(r) * image.step;
+      float value = 0;
+      if (image.encoding == "32FC1") {
+        const uint32_t bits = p[4 * c] | (p[4 * c + 1] << 8) | (p[4 * c + 2] << 16) |
+                              (static_cast<uint32_t>(p[4 * c + 3]) << 24);
+        std::memcpy(&value, &bits, 4);
+        if (!std::isfinite(value)) value = 0;
+      } else {
+        value = static_cast<float>((p[2 * c] | (p[2 * c + 1] << 8)) * 1e-3);
+      }
+      depth.at<float>(r, c) = value;
+    }
+  }
+  return depth;
+}
+
+// Field `name` of point i of a PointCloud2, read by its PointField (FLOAT32 only).
+float CloudField(const sensor_msgs::PointCloud2& cloud, size_t i, const std::string& name) {
+  for (const auto& field : cloud.fields) {
+    if (field.name != name) continue;
+    EXPECT_EQ(field.datatype, sensor_msgs::PointField::FLOAT32);
+    float value;
+    std::memcpy(&value, cloud.data.data() + i * cloud.point_step + field.offset, 4);
+    return value;
+  }
+  ADD_FAILURE() << "no field " << name;
+  return 0;
+}
+
+std::string StampKey(const ros::Time& t) { return std::to_string(t.toNSec()); }
+
+std::string Value(const diagnostic_msgs::DiagnosticStatus& status, const std::string& key) {
+  for (const auto& pair : status.values) {
+    if (pair.key == key) return pair.value;
+  }
+  return "";
+}
+
+// What came back from the node, by stamp.
+struct Received {
+  std::mutex mutex;
+  std::map<std::string, sensor_msgs::ImageConstPtr> depth;
+  std::map<std::string, sensor_msgs::CameraInfoConstPtr> info;
+  std::map<std::string, sensor_msgs::PointCloud2ConstPtr> points;
+  std::map<std::string, diagnostic_msgs::DiagnosticStatus> geometry;
+  diagnostic_msgs::DiagnosticStatus last_diagnostics;
+  int diagnostics = 0;
+
+  template <class Map>
+  bool Has(Map& map, const std::string& key) {
+    std::lock_guard<std::mutex> lock(mutex);
+    return map.count(key) > 0;
+  }
+};
+
+// Waits until `done` holds, up to `seconds`; whether it held.
+template <class F>
+bool WaitFor(F done, double seconds) {
+  const auto end = Clock::now() + std::chrono::duration<double>(seconds);
+  while (Clock::now() < end) {
+    if (done()) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  return done();
+}
+
+// A ROS master and the node, started here, with ROS_MASTER_URI set for this process.
+class LiveNode {
+ public:
+  LiveNode(const Scratch& dir, const std::vector<std::string>& node_args) {
+    port_ = FreeLoopbackPort();
+    const std::string uri = "http://127.0.0.1:" + std::to_string(port_);
+    ::setenv("ROS_MASTER_URI", uri.c_str(), 1);
+    ::setenv("ROS_IP", "127.0.0.1", 1);
+    ::unsetenv("ROS_HOSTNAME");
+    ::setenv("ROS_HOME", dir.Path("ros_home").c_str(), 1);
+    ::setenv("ROS_LOG_DIR", dir.Path("ros_log").c_str(), 1);
+    master_ = std::make_unique<ChildProcess>(
+        std::vector<std::string>{"rosmaster", "--core", "-p", std::to_string(port_)},
+        dir.Path("master.log"));
+    std::vector<std::string> argv = {kNode, "__name:=corridor_depth", "__ns:=/cd",
+                                     "image:=/cam/image_raw"};
+    argv.insert(argv.end(), node_args.begin(), node_args.end());
+    node_args_ = argv;
+    node_log_ = dir.Path("node.log");
+  }
+  // Starts the node once the master answers; false when it does not within 20 s.
+  bool Start() {
+    if (!master_->started()) return false;
+    int argc = 0;
+    ros::init(argc, nullptr, "corridor_node_test",
+              ros::init_options::NoSigintHandler | ros::init_options::AnonymousName);
+    if (!WaitFor([] { return ros::master::check(); }, 20)) return false;
+    node_ = std::make_unique<ChildProcess>(node_args_, node_log_);
+    return node_->started();
+  }
+  bool NodeRunning() { return node_ && node_->Running(); }
+  std::string NodeLog() const { return ReadText(node_log_); }
+  ~LiveNode() {
+    if (node_) node_->Stop();
+    if (ros::isStarted()) ros::shutdown();
+    master_->Stop();
+  }
+
+ private:
+  int port_ = 0;
+  std::unique_ptr<ChildProcess> master_, node_;
+  std::vector<std::string> node_args_;
+  std::string node_log_;
+};
+
+// The generated sequence: frames, truth, camera (with its height), and corridor_depth's depth.
+struct Sequence {
+  Camera camera;
+  std::vector<cv::Mat> images, truth, tool_depth;
+};
+
+void MakeSequence(const Scratch& dir, Sequence* sequence) {
+  const std::string data = dir.Path("data");
+  ASSERT_EQ(RunToCompletion({kSynth, "--preset=sequence", "--frames=" + std::to_string(kFrames),
+                             "--output_dir=" + data},
+                            dir.Path("synth.log")),
+            0)
+      << ReadText(dir.Path("synth.log"));
+  ASSERT_EQ(RunToCompletion({kDepthTool, "--input=" + data, "--output_dir=" + dir.Path("tool"),
+                             "--write_vis=false"},
+                            dir.Path("tool.log")),
+            0)
+      << ReadText(dir.Path("tool.log"));
+  ASSERT_TRUE(ReadCameraYaml(data + "/corridor/camera.yaml", &sequence->camera).ok());
+  for (int i = 0; i < kFrames; ++i) {
+    char name[16];
+    std::snprintf(name, sizeof(name), "%06d.png", i);
+    sequence->images.push_back(cv::imread(data + "/corridor/rgb/" + name, cv::IMREAD_COLOR));
+    ASSERT_FALSE(sequence->images.back().empty()) << name;
+    cv::Mat truth, tool;
+    ASSERT_TRUE(ReadDepthPng(data + "/corridor/depth/" + name, &truth).ok()) << name;
+    ASSERT_TRUE(ReadDepthPng(dir.Path("tool/corridor/depth/") + name, &tool).ok()) << name;
+    sequence->truth.push_back(truth);
+    sequence->tool_depth.push_back(tool);
+  }
+}
+
+sensor_msgs::ImagePtr ImageMessage(const cv::Mat& bgr, const ros::Time& stamp) {
+  auto image = boost::make_shared<sensor_msgs::Image>();
+  image->header.stamp = stamp;
+  image->header.frame_id = kFrameId;
+  image->height = static_cast<uint32_t>(bgr.rows);
+  image->width = static_cast<uint32_t>(bgr.cols);
+  image->encoding = "bgr8";
+  image->step = static_cast<uint32_t>(bgr.cols * 3);
+  image->data.resize(static_cast<size_t>(image->step) * image->height);
+  for (int r = 0; r < bgr.rows; ++r) {
+    std::memcpy(image->data.data() + static_cast<size_t>(r) * image->step, bgr.ptr(r),
+                image->step);
+  }
+  return image;
+}
+
+sensor_msgs::CameraInfoPtr InfoMessage(const Camera& c, const ros::Time& stamp) {
+  auto info = boost::make_shared<sensor_msgs::CameraInfo>();
+  info->header.stamp = stamp;
+  info->header.frame_id = kFrameId;
+  info->width = static_cast<uint32_t>(c.image_width);
+  info->height = static_cast<uint32_t>(c.image_height);
+  info->distortion_model = "plumb_bob";
+  info->D = {0, 0, 0, 0, 0};
+  info->K = {c.fx, 0, c.cx, 0, c.fy, c.cy, 0, 0, 1};
+  info->R = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+  info->P = {c.fx, 0, c.cx, 0, 0, c.fy, c.cy, 0, 0, 0, 1, 0};
+  return info;
+}
+
+// The test's side of the graph: camera publishers and subscribers to everything the node sends.
+struct Graph {
+  explicit Graph(Received* received, const std::string& ns = "/cd") {
+    ros::NodeHandle nh;
+    image = nh.advertise<sensor_msgs::Image>("/cam/image_raw", 5);
+    info = nh.advertise<sensor_msgs::CameraInfo>("/cam/camera_info", 5);
+    subscribers.push_back(nh.subscribe<sensor_msgs::Image>(
+        ns + "/depth/image", 50, [received](const sensor_msgs::ImageConstPtr& m) {
+          std::lock_guard<std::mutex> lock(received->mutex);
+          received->depth[StampKey(m->header.stamp)] = m;
+        }));
+    subscribers.push_back(nh.subscribe<sensor_msgs::CameraInfo>(
+        ns + "/depth/camera_info", 50, [received](const sensor_msgs::CameraInfoConstPtr& m) {
+          std::lock_guard<std::mutex> lock(received->mutex);
+          received->info[StampKey(m->header.stamp)] = m;
+        }));
+    subscribers.push_back(nh.subscribe<sensor_msgs::PointCloud2>(
+        ns + "/depth/points", 50, [received](const sensor_msgs::PointCloud2ConstPtr& m) {
+          std::lock_guard<std::mutex> lock(received->mutex);
+          received->points[StampKey(m->header.stamp)] = m;
+        }));
+    subscribers.push_back(nh.subscribe<diagnostic_msgs::DiagnosticStatus>(
+        ns + "/corridor/geometry", 50,
+        [received](const diagnostic_msgs::DiagnosticStatusConstPtr& m) {
+          std::lock_guard<std::mutex> lock(received->mutex);
+          received->geometry[Value(*m, "stamp")] = *m;
+        }));
+    subscribers.push_back(nh.subscribe<diagnostic_msgs::DiagnosticArray>(
+        "/diagnostics", 50, [received](const diagnostic_msgs::DiagnosticArrayConstPtr& m) {
+          for (const auto& status : m->status) {
+            if (status.name.find("corridor_depth") == std::string::npos) continue;
+            std::lock_guard<std::mutex> lock(received->mutex);
+            received->last_diagnostics = status;
+            ++received->diagnostics;
+          }
+        }));
+    spinner = std::make_unique<ros::AsyncSpinner>(1);
+    spinner->start();
+  }
+  // Every link to the node is up.
+  bool Connected() const {
+    if (image.getNumSubscribers() == 0 || info.getNumSubscribers() == 0) return false;
+    for (size_t i = 0; i + 1 < subscribers.size(); ++i) {  // Not /diagnostics: it may be idle.
+      if (subscribers[i].getNumPublishers() == 0) return false;
+    }
+    return true;
+  }
+  void Publish(const sensor_msgs::ImagePtr& frame, const sensor_msgs::CameraInfoPtr& camera) {
+    info.publish(camera);
+    image.publish(frame);
+  }
+  ros::Publisher image, info;
+  std::vector<ros::Subscriber> subscribers;
+  std::unique_ptr<ros::AsyncSpinner> spinner;
+};
+
+// "<sec>.<nsec>" as the node writes stamps in corridor/geometry.
+std::string StampText(const ros::Time& t) {
+  char text[32];
+  std::snprintf(text, sizeof(text), "%u.%09u", t.sec, t.nsec);
+  return text;
+}
+
+TEST(NodeLiveTest, SequenceDepthPointsAndBadFrames) {
+  Scratch dir;
+  Sequence sequence;
+  MakeSequence(dir, &sequence);
+  if (HasFatalFailure()) return;
+  char height[32];
+  std::snprintf(height, sizeof(height), "%.9g", sequence.camera.mount_height);
+  LiveNode live(dir, {std::string("_camera_height:=") + height, "_publish_points:=true",
+                      "_points_stride:=1", "_diagnostics_period:=0.5"});
+  ASSERT_TRUE(live.Start()) << "no ROS master:\n" << ReadText(dir.Path("master.log"));
+  Received received;
+  Graph graph(&received);
+  ASSERT_TRUE(WaitFor([&] { return graph.Connected(); }, 30)) << live.NodeLog();
+
+  // The 30 frames, and after frame 14 three bad ones: all black, an image whose size is not
+  // camera_info's, and a camera_info with zero focal length.
+  const Camera& camera = sequence.camera;
+  std::vector<ros::Time> good;
+  std::vector<std::pair<ros::Time, std::string>> bad;  // Stamp and what its note must name.
+  ros::Time stamp(1700000000, 0);
+  const auto next_stamp = [&] { return stamp += ros::Duration(0, 100000000); };
+  const auto send_and_wait = [&](const sensor_msgs::ImagePtr& frame,
+                                 const sensor_msgs::CameraInfoPtr& info) {
+    graph.Publish(frame, info);
+    return WaitFor([&] { return received.Has(received.geometry, StampText(frame->header.stamp)); },
+                   60);
+  };
+  for (int i = 0; i < kFrames; ++i) {
+    const ros::Time t = next_stamp();
+    ASSERT_TRUE(send_and_wait(ImageMessage(sequence.images[i], t), InfoMessage(camera, t)))
+        << "frame " << i << ": nothing came back\n" << live.NodeLog();
+    const std::string key = StampKey(t);
+    ASSERT_TRUE(WaitFor([&] {
+      return received.Has(received.depth, key) && received.Has(received.info, key) &&
+             received.Has(received.points, key);
+    }, 30)) << "frame " << i << ": no depth, camera_info or points\n" << live.NodeLog();
+    good.push_back(t);
+    if (i == 14) {
+      ros::Time b = next_stamp();
+      cv::Mat black(camera.image_height, camera.image_width, CV_8UC3, cv::Scalar::all(0));
+      ASSERT_TRUE(send_and_wait(ImageMessage(black, b), InfoMessage(camera, b)));
+      bad.emplace_back(b, "refused");
+      b = next_stamp();
+      cv::Mat small;
+      cv::resize(sequence.images[i], small, cv::Size(camera.image_width / 2, camera.image_height / 2));
+      ASSERT_TRUE(send_and_wait(ImageMessage(small, b), InfoMessage(camera, b)));
+      bad.emplace_back(b, "camera_info is 640x480 but the image is 320x240");
+      b = next_stamp();
+      auto zero = InfoMessage(camera, b);
+      zero->K[0] = zero->K[4] = 0;
+      ASSERT_TRUE(send_and_wait(ImageMessage(sequence.images[i], b), zero));
+      bad.emplace_back(b, "focal length");
+    }
+  }
+  EXPECT_TRUE(live.NodeRunning());
+
+  // The bad frames: no depth, and corridor/geometry says why.
+  for (const auto& [t, why] : bad) {
+    std::lock_guard<std::mutex> lock(received.mutex);
+    EXPECT_EQ(received.depth.count(StampKey(t)), 0u);
+    const auto& geometry = received.geometry[StampText(t)];
+    EXPECT_NE(Value(geometry, "status"), "ok");
+    EXPECT_NE(geometry.level, diagnostic_msgs::DiagnosticStatus::OK);
+    const std::string text = Value(geometry, "status") + " " + Value(geometry, "note");
+    EXPECT_NE(text.find(why), std::string::npos) << text;
+  }
+
+  // The good frames: stamps, frame_id, camera_info, depth against truth and corridor_depth, and
+  // points against the ones made here from depth + camera_info (depth_image_proc's formula).
+  std::vector<DepthMetrics> node_metrics, tool_metrics;
+  double worst_point = 0;
+  std::map<std::string, sensor_msgs::ImageConstPtr> depths;
+  std::map<std::string, sensor_msgs::CameraInfoConstPtr> infos;
+  std::map<std::string, sensor_msgs::PointCloud2ConstPtr> clouds;
+  {
+    std::lock_guard<std::mutex> lock(received.mutex);
+    depths = received.depth;
+    infos = received.info;
+    clouds = received.points;
+  }
+  EXPECT_EQ(depths.size(), static_cast<size_t>(kFrames));
+  for (int i = 0; i < kFrames; ++i) {
+    const std::string key = StampKey(good[i]);
+    const sensor_msgs::Image& depth = *depths[key];
+    const sensor_msgs::CameraInfo& info = *infos[key];
+    const sensor_msgs::PointCloud2& cloud = *clouds[key];
+    EXPECT_EQ(depth.header.frame_id, kFrameId);
+    EXPECT_EQ(info.header.frame_id, kFrameId);
+    EXPECT_EQ(cloud.header.frame_id, kFrameId);
+    EXPECT_EQ(depth.encoding, "32FC1");
+    ASSERT_EQ(depth.width, static_cast<uint32_t>(camera.image_width));
+    ASSERT_EQ(depth.height, static_cast<uint32_t>(camera.image_height));
+    EXPECT_EQ(info.width, depth.width);
+    EXPECT_EQ(info.height, depth.height);
+    EXPECT_DOUBLE_EQ(info.K[0], camera.fx);
+    EXPECT_DOUBLE_EQ(info.K[4], camera.fy);
+    EXPECT_DOUBLE_EQ(info.K[2], camera.cx);
+    EXPECT_DOUBLE_EQ(info.K[5], camera.cy);
+    EXPECT_DOUBLE_EQ(info.P[0], camera.fx);
+    const cv::Mat metres = DepthFromMessage(depth);
+    node_metrics.push_back(ComputeDepthMetrics(metres, sequence.truth[i], 40.0));
+    tool_metrics.push_back(ComputeDepthMetrics(sequence.tool_depth[i], sequence.truth[i], 40.0));
+    ASSERT_EQ(cloud.width, depth.width);
+    ASSERT_EQ(cloud.height, depth.height);
+    const double fx = info.K[0], fy = info.K[4], cx = info.K[2], cy = info.K[5];
+    int nan_points = 0;
+    for (int v = 0; v < metres.rows; ++v) {
+      for (int u = 0; u < metres.cols; ++u) {
+        const size_t at = static_cast<size_t>(v) * cloud.width + static_cast<size_t>(u);
+        const float z = metres.at<float>(v, u);
+        const float px = CloudField(cloud, at, "x"), py = CloudField(cloud, at, "y"),
+                    pz = CloudField(cloud, at, "z");
+        if (z == 0) {
+          ASSERT_TRUE(std::isnan(px) && std::isnan(py) && std::isnan(pz)) << u << "," << v;
+          ++nan_points;
+          continue;
+        }
+        const double ex = (u - cx) * z / fx, ey = (v - cy) * z / fy;
+        worst_point = std::max({worst_point, std::abs(px - ex), std::abs(py - ey),
+                                std::abs(static_cast<double>(pz) - z)});
+      }
+    }
+    EXPECT_EQ(cloud.is_dense, nan_points == 0);
+  }
+  EXPECT_LT(worst_point, 1e-5);
+  const DepthMetrics node = AverageDepthMetrics(node_metrics);
+  const DepthMetrics tool = AverageDepthMetrics(tool_metrics);
+  std::printf("[ node     ] AbsRel node %.5f, corridor_depth %.5f; coverage %.4f / %.4f; "
+              "worst point difference %.2g m\n",
+              node.abs_rel, tool.abs_rel, node.coverage, tool.coverage, worst_point);
+  EXPECT_NEAR(node.abs_rel, tool.abs_rel, 0.01);
+  EXPECT_LT(node.abs_rel, 0.1);  // And a corridor, not an empty map.
+  EXPECT_GT(node.coverage, 0.5);
+
+  // /diagnostics: every frame counted, none dropped (each was sent after the previous came back),
+  // the three bad ones named, latency reported.
+  const bool counted = WaitFor([&] {
+    std::lock_guard<std::mutex> lock(received.mutex);
+    const auto& d = received.last_diagnostics;
+    return Value(d, "frames_published") == std::to_string(kFrames) &&
+           Value(d, "frames_received") == std::to_string(kFrames + 3);
+  }, 10);
+  diagnostic_msgs::DiagnosticStatus diagnostics;
+  {
+    std::lock_guard<std::mutex> lock(received.mutex);
+    diagnostics = received.last_diagnostics;
+  }
+  EXPECT_TRUE(counted) << "frames_published " << Value(diagnostics, "frames_published")
+                       << ", frames_received " << Value(diagnostics, "frames_received");
+  EXPECT_EQ(Value(diagnostics, "frames_dropped"), "0");
+  EXPECT_EQ(std::atoi(Value(diagnostics, "frames_refused").c_str()) +
+                std::atoi(Value(diagnostics, "frames_failed").c_str()),
+            3);
+  EXPECT_EQ(Value(diagnostics, "last_problem_stamp"), StampText(bad.back().first));
+  EXPECT_GT(std::atof(Value(diagnostics, "latency_median_s").c_str()), 0.0);
+  EXPECT_GE(std::atof(Value(diagnostics, "latency_p99_s").c_str()),
+            std::atof(Value(diagnostics, "latency_median_s").c_str()));
+}
+
+}  // namespace
+}  // namespace testing_util
+}  // namespace corridor
