@@ -63,7 +63,7 @@ struct Scratch {
 int RunToCompletion(const std::vector<std::string>& argv, const std::string& log) {
   ChildProcess child(argv, log);
   if (!child.started()) return -1;
-  for (int i = 0; i < 6000 && child.Running(); ++i) {  // At most 10 minutes.
+  for (int i = 0; i < 1800 && child.Running(); ++i) {  // At most 3 minutes.
     std::this_thread::sleep_for(std::chrono::milliseconds(100));
   }
   const int status = child.Stop();
@@ -136,10 +136,15 @@ struct Received {
   }
 };
 
-// Waits until `done` holds, up to `seconds`; whether it held.
+// Every wait of a test ends by this time: a test never hangs on a silent node.
+Clock::time_point g_deadline = Clock::time_point::max();
+
+// Waits until `done` holds, up to `seconds` (and the test's deadline); whether it held.
 template <class F>
 bool WaitFor(F done, double seconds) {
-  const auto end = Clock::now() + std::chrono::duration<double>(seconds);
+  const auto wait = std::chrono::duration_cast<Clock::duration>(
+      std::chrono::duration<double>(seconds));
+  const auto end = std::min(g_deadline, Clock::now() + wait);
   while (Clock::now() < end) {
     if (done()) return true;
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
@@ -198,9 +203,9 @@ struct Sequence {
   std::vector<cv::Mat> images, truth, tool_depth;
 };
 
-void MakeSequence(const Scratch& dir, Sequence* sequence) {
+void MakeSequence(const Scratch& dir, Sequence* sequence, int frames = kFrames) {
   const std::string data = dir.Path("data");
-  ASSERT_EQ(RunToCompletion({kSynth, "--preset=sequence", "--frames=" + std::to_string(kFrames),
+  ASSERT_EQ(RunToCompletion({kSynth, "--preset=sequence", "--frames=" + std::to_string(frames),
                              "--output_dir=" + data},
                             dir.Path("synth.log")),
             0)
@@ -211,7 +216,7 @@ void MakeSequence(const Scratch& dir, Sequence* sequence) {
             0)
       << ReadText(dir.Path("tool.log"));
   ASSERT_TRUE(ReadCameraYaml(data + "/corridor/camera.yaml", &sequence->camera).ok());
-  for (int i = 0; i < kFrames; ++i) {
+  for (int i = 0; i < frames; ++i) {
     char name[16];
     std::snprintf(name, sizeof(name), "%06d.png", i);
     sequence->images.push_back(cv::imread(data + "/corridor/rgb/" + name, cv::IMREAD_COLOR));
@@ -256,7 +261,9 @@ sensor_msgs::CameraInfoPtr InfoMessage(const Camera& c, const ros::Time& stamp) 
 
 // The test's side of the graph: camera publishers and subscribers to everything the node sends.
 struct Graph {
-  explicit Graph(Received* received, const std::string& ns = "/cd") {
+  // `points`: the node publishes depth/points, so wait for it too.
+  Graph(Received* received, bool with_points) : points(with_points) {
+    const std::string ns = "/cd";
     ros::NodeHandle nh;
     image = nh.advertise<sensor_msgs::Image>("/cam/image_raw", 5);
     info = nh.advertise<sensor_msgs::CameraInfo>("/cam/camera_info", 5);
@@ -297,6 +304,7 @@ struct Graph {
   bool Connected() const {
     if (image.getNumSubscribers() == 0 || info.getNumSubscribers() == 0) return false;
     for (size_t i = 0; i + 1 < subscribers.size(); ++i) {  // Not /diagnostics: it may be idle.
+      if (i == 2 && !points) continue;
       if (subscribers[i].getNumPublishers() == 0) return false;
     }
     return true;
@@ -305,6 +313,7 @@ struct Graph {
     info.publish(camera);
     image.publish(frame);
   }
+  bool points;
   ros::Publisher image, info;
   std::vector<ros::Subscriber> subscribers;
   std::unique_ptr<ros::AsyncSpinner> spinner;
@@ -324,11 +333,12 @@ TEST(NodeLiveTest, SequenceDepthPointsAndBadFrames) {
   if (HasFatalFailure()) return;
   char height[32];
   std::snprintf(height, sizeof(height), "%.9g", sequence.camera.mount_height);
+  g_deadline = Clock::now() + std::chrono::minutes(5);
   LiveNode live(dir, {std::string("_camera_height:=") + height, "_publish_points:=true",
                       "_points_stride:=1", "_diagnostics_period:=0.5"});
   ASSERT_TRUE(live.Start()) << "no ROS master:\n" << ReadText(dir.Path("master.log"));
   Received received;
-  Graph graph(&received);
+  Graph graph(&received, true);
   ASSERT_TRUE(WaitFor([&] { return graph.Connected(); }, 30)) << live.NodeLog();
 
   // The 30 frames, and after frame 14 three bad ones: all black, an image whose size is not
@@ -342,7 +352,7 @@ TEST(NodeLiveTest, SequenceDepthPointsAndBadFrames) {
                                  const sensor_msgs::CameraInfoPtr& info) {
     graph.Publish(frame, info);
     return WaitFor([&] { return received.Has(received.geometry, StampText(frame->header.stamp)); },
-                   60);
+                   20);
   };
   for (int i = 0; i < kFrames; ++i) {
     const ros::Time t = next_stamp();
@@ -352,7 +362,7 @@ TEST(NodeLiveTest, SequenceDepthPointsAndBadFrames) {
     ASSERT_TRUE(WaitFor([&] {
       return received.Has(received.depth, key) && received.Has(received.info, key) &&
              received.Has(received.points, key);
-    }, 30)) << "frame " << i << ": no depth, camera_info or points\n" << live.NodeLog();
+    }, 20)) << "frame " << i << ": no depth, camera_info or points\n" << live.NodeLog();
     good.push_back(t);
     if (i == 14) {
       ros::Time b = next_stamp();
@@ -474,6 +484,65 @@ TEST(NodeLiveTest, SequenceDepthPointsAndBadFrames) {
   EXPECT_GT(std::atof(Value(diagnostics, "latency_median_s").c_str()), 0.0);
   EXPECT_GE(std::atof(Value(diagnostics, "latency_p99_s").c_str()),
             std::atof(Value(diagnostics, "latency_median_s").c_str()));
+}
+
+// ~base_frame: the camera height from TF (a static base_footprint -> camera transform). A frame
+// before the transform exists gets no depth and says why; the frames after it do, with the height.
+TEST(NodeLiveTest, CameraHeightFromTf) {
+  Scratch dir;
+  Sequence sequence;
+  MakeSequence(dir, &sequence, 3);
+  if (HasFatalFailure()) return;
+  g_deadline = Clock::now() + std::chrono::minutes(3);
+  LiveNode live(dir, {"_base_frame:=base_footprint"});
+  ASSERT_TRUE(live.Start()) << "no ROS master:\n" << ReadText(dir.Path("master.log"));
+  Received received;
+  Graph graph(&received, false);
+  ASSERT_TRUE(WaitFor([&] { return graph.Connected(); }, 30)) << live.NodeLog();
+  const Camera& camera = sequence.camera;
+  const auto send_and_wait = [&](int i, const ros::Time& t) {
+    graph.Publish(ImageMessage(sequence.images[i], t), InfoMessage(camera, t));
+    return WaitFor([&] { return received.Has(received.geometry, StampText(t)); }, 20);
+  };
+  const ros::Time before(1700000000, 0);
+  ASSERT_TRUE(send_and_wait(0, before)) << live.NodeLog();
+  {
+    std::lock_guard<std::mutex> lock(received.mutex);
+    const auto& geometry = received.geometry[StampText(before)];
+    EXPECT_EQ(Value(geometry, "status"), "failed");
+    EXPECT_NE(Value(geometry, "note").find("base_footprint"), std::string::npos)
+        << Value(geometry, "note");
+    EXPECT_EQ(received.depth.count(StampKey(before)), 0u);
+  }
+
+  ros::NodeHandle nh;
+  ros::Publisher tf = nh.advertise<tf2_msgs::TFMessage>("/tf_static", 1, /*latch=*/true);
+  tf2_msgs::TFMessage transforms;
+  geometry_msgs::TransformStamped mount;
+  mount.header.stamp = before;
+  mount.header.frame_id = "base_footprint";
+  mount.child_frame_id = kFrameId;
+  mount.transform.translation.x = 0.2;
+  mount.transform.translation.z = camera.mount_height;
+  // The optical frame (z forward, x right, y down) on a base whose x is forward and z up.
+  mount.transform.rotation.x = -0.5;
+  mount.transform.rotation.y = 0.5;
+  mount.transform.rotation.z = -0.5;
+  mount.transform.rotation.w = 0.5;
+  transforms.transforms.push_back(mount);
+  tf.publish(transforms);
+  ASSERT_TRUE(WaitFor([&] { return tf.getNumSubscribers() > 0; }, 20));
+  for (int i = 1; i < 3; ++i) {
+    const ros::Time t = before + ros::Duration(0.1 * i);
+    ASSERT_TRUE(send_and_wait(i, t)) << live.NodeLog();
+    ASSERT_TRUE(WaitFor([&] { return received.Has(received.depth, StampKey(t)); }, 20))
+        << "frame " << i << ": no depth\n" << live.NodeLog();
+    std::lock_guard<std::mutex> lock(received.mutex);
+    const auto& geometry = received.geometry[StampText(t)];
+    EXPECT_EQ(Value(geometry, "status"), "ok");
+    EXPECT_NEAR(std::atof(Value(geometry, "camera_height_m").c_str()), camera.mount_height, 1e-6);
+  }
+  EXPECT_TRUE(live.NodeRunning());
 }
 
 }  // namespace
