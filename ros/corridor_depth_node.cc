@@ -170,7 +170,7 @@ void CorridorDepthNode::Process(const Input& input) {
 void CorridorDepthNode::Report(const std_msgs::Header& header, const Status& status,
                                const RecoverDepthResult* result, const Camera* camera) {
   const std::string stamp = StampText(header.stamp);
-  const char* status_class = FrameStatusClass(status);
+  const char* status_class = StatusClass(status.code());
   stats_.Problem(stamp, status_class, status.ToString());
   ROS_WARN_THROTTLE(config_.diagnostics_period, "frame %s %s: %s", stamp.c_str(), status_class,
                     status.ToString().c_str());

@@ -4,28 +4,23 @@ namespace corridor {
 
 Status FrameProcessor::Create(const RecoverDepthOptions& options, bool sequence,
                               std::unique_ptr<FrameProcessor>* processor) {
-  std::unique_ptr<DepthRecoverer> recoverer;
-  const Status status = DepthRecoverer::Create(options, &recoverer);
+  std::unique_ptr<FrameProcessor> made(new FrameProcessor());
+  Status status = DepthRecoverer::Create(options, &made->recoverer_);
+  if (status.ok() && sequence) status = DepthSequence::Create(options, &made->sequence_);
   if (!status.ok()) return status;
-  processor->reset(new FrameProcessor(std::move(recoverer), sequence));
+  *processor = std::move(made);
   return Status::Ok();
 }
 
 Status FrameProcessor::Process(const cv::Mat& image, const Camera& camera,
                                RecoverDepthResult* result) {
   *result = RecoverDepthResult();
-  if (!sequence_) return recoverer_->Recover(image, camera, result);
-  // As corridor_depth's pipeline does for a stream: detect along the track, reconstruct with the
-  // previous frame's geometry, then remember this one.
-  recoverer_->Detect(image, camera, result, &track_);
-  if (result->ReadyToReconstruct()) recoverer_->Reconstruct(camera, result, prior_.Previous());
-  prior_.Update(*result);
-  return result->status;
+  if (sequence_) return sequence_->Process(image, camera, result);
+  return recoverer_->Recover(image, camera, result);
 }
 
 void FrameProcessor::Reset() {
-  track_ = JunctionTrack();
-  prior_ = SequencePrior();
+  if (sequence_) sequence_->Reset();
 }
 
 }  // namespace corridor

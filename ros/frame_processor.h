@@ -6,15 +6,15 @@
 
 #include "core/camera.h"
 #include "core/status.h"
-#include "perception/junction_tracker.h"
+#include "pipeline/depth_sequence.h"
 #include "pipeline/recover_depth.h"
-#include "pipeline/sequence_prior.h"
 
 namespace corridor {
 
-// The node's frames through the library: one stream in order (~sequence true: the junction track
-// and the width and ceiling holds carried from frame to frame, as corridor_depth does for a video)
-// or independent frames. One thread at a time.
+// The node's frames through the library: one stream in order (~sequence true: a DepthSequence,
+// which carries the junction track and the width and ceiling holds from frame to frame, as
+// corridor_depth does for a video) or independent frames (DepthRecoverer::Recover). One thread at
+// a time.
 class FrameProcessor {
  public:
   static Status Create(const RecoverDepthOptions& options, bool sequence,
@@ -26,12 +26,9 @@ class FrameProcessor {
   const RecoverDepthOptions& options() const { return recoverer_->options(); }
 
  private:
-  FrameProcessor(std::unique_ptr<DepthRecoverer> recoverer, bool sequence)
-      : recoverer_(std::move(recoverer)), sequence_(sequence) {}
-  std::unique_ptr<DepthRecoverer> recoverer_;
-  bool sequence_;
-  JunctionTrack track_;
-  SequencePrior prior_;
+  FrameProcessor() = default;
+  std::unique_ptr<DepthRecoverer> recoverer_;  // Independent frames; also holds the options.
+  std::unique_ptr<DepthSequence> sequence_;    // Null for independent frames.
 };
 
 }  // namespace corridor

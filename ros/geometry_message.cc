@@ -23,25 +23,13 @@ diagnostic_msgs::KeyValue Pair(const std::string& key, const std::string& value)
 
 }  // namespace
 
-const char* FrameStatusClass(const Status& status) {
-  switch (status.code()) {
-    case StatusCode::kOk:
-      return "ok";
-    case StatusCode::kNoCorridorFound:
-    case StatusCode::kImplausibleGeometry:
-      return "refused";
-    default:
-      return "failed";
-  }
-}
-
 diagnostic_msgs::DiagnosticStatus GeometryMessage(const std::string& stamp,
                                                   const std::string& frame_id,
                                                   const Status& status,
                                                   const RecoverDepthResult* result,
                                                   const Camera* camera) {
   diagnostic_msgs::DiagnosticStatus message;
-  const std::string status_class = FrameStatusClass(status);
+  const std::string status_class = StatusClass(status.code());
   message.level = status_class == "ok"        ? diagnostic_msgs::DiagnosticStatus::OK
                   : status_class == "refused" ? diagnostic_msgs::DiagnosticStatus::WARN
                                               : diagnostic_msgs::DiagnosticStatus::ERROR;

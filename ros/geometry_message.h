@@ -26,7 +26,4 @@ diagnostic_msgs::DiagnosticStatus GeometryMessage(const std::string& stamp,
                                                   const RecoverDepthResult* result,
                                                   const Camera* camera);
 
-// "ok", "refused" or "failed" for a status (conventions.md's frame status classes).
-const char* FrameStatusClass(const Status& status);
-
 }  // namespace corridor
