@@ -34,7 +34,7 @@ diagnostic_msgs::DiagnosticStatus GeometryMessage(const std::string& stamp,
                   : status_class == "refused" ? diagnostic_msgs::DiagnosticStatus::WARN
                                               : diagnostic_msgs::DiagnosticStatus::ERROR;
   message.name = "corridor_depth/geometry";
-  message.message = status.ok() ? "ok" : status.ToString();
+  message.message = status.ok() ? "ok" : status.message();
   message.hardware_id = frame_id;
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const bool has = result != nullptr && result->has_geometry && status.ok();
@@ -43,8 +43,11 @@ diagnostic_msgs::DiagnosticStatus GeometryMessage(const std::string& stamp,
   auto& values = message.values;
   values.push_back(Pair("stamp", stamp));
   values.push_back(Pair("status", status_class));
-  values.push_back(Pair("note", status.ok() ? (result ? result->fallback : "") : status.ToString()));
-  values.push_back(Pair("confidence", Number(nan)));  // CONFIDENCE_PENDING
+  const std::string note = status.ok() ? (result ? result->fallback : "")
+                                       : std::string(StatusCodeName(status.code())) + ": " +
+                                             status.message();
+  values.push_back(Pair("note", note));
+  values.push_back(Pair("confidence", Number(result ? result->confidence : nan)));
   values.push_back(Pair("yaw_rad", value(g.yaw)));
   values.push_back(Pair("pitch_rad", value(g.pitch)));
   values.push_back(Pair("offset_m", value(g.offset)));

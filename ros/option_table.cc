@@ -24,6 +24,7 @@ void VisitRecoverDepthOptions(RecoverDepthOptions* o, OptionVisitor* v) {
   v->Double("max_floor_texture", &o->perception.max_floor_texture);
   v->Double("hough_angle_window", &o->perception.hough_angle_window_deg);
   v->Int("relaxed_hough_threshold", &o->perception.relaxed_hough_threshold);
+  v->Double("min_confidence", &o->min_confidence);
 }
 
 }  // namespace corridor

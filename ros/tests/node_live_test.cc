@@ -152,47 +152,99 @@ bool WaitFor(F done, double seconds) {
   return done();
 }
 
-// A ROS master and the node, started here, with ROS_MASTER_URI set for this process.
-class LiveNode {
+// The ROS master of this test process, on a free loopback port, with ROS_MASTER_URI set here
+// and inherited by the node. ctest runs each test in a process of its own, so each gets its own
+// master; a process that runs several tests shares one (roscpp initialises once per process).
+class Master {
  public:
-  LiveNode(const Scratch& dir, const std::vector<std::string>& node_args) {
-    port_ = FreeLoopbackPort();
-    const std::string uri = "http://127.0.0.1:" + std::to_string(port_);
+  static Master& Get() {
+    if (instance_ == nullptr) instance_ = new Master();
+    return *instance_;
+  }
+  // Shuts roscpp down and stops the master, if one was started (after the last test).
+  static void Stop() {
+    delete instance_;
+    instance_ = nullptr;
+  }
+  // True once the master answers (waits up to 20 s the first time).
+  bool Ready() {
+    if (!started_) {
+      started_ = true;
+      int argc = 0;
+      ros::init(argc, nullptr, "corridor_node_test",
+                ros::init_options::NoSigintHandler | ros::init_options::AnonymousName);
+      ready_ = process_->started() && WaitFor([] { return ros::master::check(); }, 20);
+    }
+    return ready_;
+  }
+  std::string Log() const { return ReadText(dir_.string() + "/master.log"); }
+  ~Master() {
+    if (ros::isStarted()) ros::shutdown();
+    process_->Stop();
+    std::error_code ec;
+    fs::remove_all(dir_, ec);
+  }
+
+ private:
+  Master() {
+    dir_ = fs::path(::testing::TempDir()) / ("corridor_master_" + std::to_string(::getpid()));
+    fs::create_directories(dir_);
+    const int port = FreeLoopbackPort();
+    const std::string uri = "http://127.0.0.1:" + std::to_string(port);
     ::setenv("ROS_MASTER_URI", uri.c_str(), 1);
     ::setenv("ROS_IP", "127.0.0.1", 1);
     ::unsetenv("ROS_HOSTNAME");
-    ::setenv("ROS_HOME", dir.Path("ros_home").c_str(), 1);
-    ::setenv("ROS_LOG_DIR", dir.Path("ros_log").c_str(), 1);
-    master_ = std::make_unique<ChildProcess>(
-        std::vector<std::string>{"rosmaster", "--core", "-p", std::to_string(port_)},
-        dir.Path("master.log"));
-    std::vector<std::string> argv = {kNode, "__name:=corridor_depth", "__ns:=/cd",
-                                     "image:=/cam/image_raw"};
-    argv.insert(argv.end(), node_args.begin(), node_args.end());
-    node_args_ = argv;
+    ::setenv("ROS_HOME", (dir_ / "ros_home").c_str(), 1);
+    ::setenv("ROS_LOG_DIR", (dir_ / "ros_log").c_str(), 1);
+    process_ = std::make_unique<ChildProcess>(
+        std::vector<std::string>{"rosmaster", "--core", "-p", std::to_string(port)},
+        (dir_ / "master.log").string());
+  }
+  static Master* instance_;
+  fs::path dir_;
+  std::unique_ptr<ChildProcess> process_;
+  bool started_ = false, ready_ = false;
+};
+Master* Master::instance_ = nullptr;
+
+class StopMaster : public ::testing::Environment {
+ public:
+  void TearDown() override { Master::Stop(); }
+};
+const ::testing::Environment* const kStopMaster =
+    ::testing::AddGlobalTestEnvironment(new StopMaster);
+
+// The node, started here against this process's master; stopped when this goes.
+class LiveNode {
+ public:
+  LiveNode(const Scratch& dir, const std::vector<std::string>& node_args) {
+    // A name of its own: private parameters given on a command line stay on the master.
+    static int started = 0;
+    node_args_ = {kNode, "__name:=corridor_depth_" + std::to_string(started++), "__ns:=/cd",
+                  "image:=/cam/image_raw"};
+    node_args_.insert(node_args_.end(), node_args.begin(), node_args.end());
     node_log_ = dir.Path("node.log");
   }
-  // Starts the node once the master answers; false when it does not within 20 s.
+  // Starts the node once the master answers; false when it does not.
   bool Start() {
-    if (!master_->started()) return false;
-    int argc = 0;
-    ros::init(argc, nullptr, "corridor_node_test",
-              ros::init_options::NoSigintHandler | ros::init_options::AnonymousName);
-    if (!WaitFor([] { return ros::master::check(); }, 20)) return false;
+    if (!Master::Get().Ready()) return false;
     node_ = std::make_unique<ChildProcess>(node_args_, node_log_);
     return node_->started();
   }
   bool NodeRunning() { return node_ && node_->Running(); }
+  // The exit code once the node has ended by itself (-1 otherwise).
+  int ExitCode() {
+    if (!node_ || node_->Running()) return -1;
+    const int status = node_->Stop();
+    return status >= 0 && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  }
   std::string NodeLog() const { return ReadText(node_log_); }
   ~LiveNode() {
     if (node_) node_->Stop();
-    if (ros::isStarted()) ros::shutdown();
-    master_->Stop();
   }
 
  private:
-  int port_ = 0;
-  std::unique_ptr<ChildProcess> master_, node_;
+  std::unique_ptr<ChildProcess> node_;
   std::vector<std::string> node_args_;
   std::string node_log_;
 };
@@ -343,7 +395,7 @@ TEST(NodeLiveTest, SequenceDepthPointsAndBadFrames) {
   g_deadline = Clock::now() + std::chrono::minutes(5);
   LiveNode live(dir, {std::string("_camera_height:=") + height, "_publish_points:=true",
                       "_points_stride:=1", "_diagnostics_period:=0.5"});
-  ASSERT_TRUE(live.Start()) << "no ROS master:\n" << ReadText(dir.Path("master.log"));
+  ASSERT_TRUE(live.Start()) << "no ROS master:\n" << Master::Get().Log();
   Received received;
   Graph graph(&received, true);
   ASSERT_TRUE(WaitFor([&] { return graph.Connected(); }, 30)) << live.NodeLog();
@@ -404,7 +456,7 @@ TEST(NodeLiveTest, SequenceDepthPointsAndBadFrames) {
   // The good frames: stamps, frame_id, camera_info, depth against truth and corridor_depth, and
   // points against the ones made here from depth + camera_info (depth_image_proc's formula).
   std::vector<DepthMetrics> node_metrics, tool_metrics;
-  double worst_point = 0;
+  double worst_point = 0, lowest_confidence = 1;
   std::map<std::string, sensor_msgs::ImageConstPtr> depths;
   std::map<std::string, sensor_msgs::CameraInfoConstPtr> infos;
   std::map<std::string, sensor_msgs::PointCloud2ConstPtr> clouds;
@@ -424,6 +476,16 @@ TEST(NodeLiveTest, SequenceDepthPointsAndBadFrames) {
     EXPECT_EQ(info.header.frame_id, kFrameId);
     EXPECT_EQ(cloud.header.frame_id, kFrameId);
     EXPECT_EQ(depth.encoding, "32FC1");
+    {
+      std::lock_guard<std::mutex> lock(received.mutex);
+      const auto& geometry = received.geometry[StampText(good[i])];
+      EXPECT_EQ(Value(geometry, "status"), "ok");
+      const double confidence = std::atof(Value(geometry, "confidence").c_str());
+      EXPECT_GT(confidence, 0.0);
+      EXPECT_LE(confidence, 1.0);
+      EXPECT_GT(std::atof(Value(geometry, "width_m").c_str()), 0.5);
+      lowest_confidence = std::min(lowest_confidence, confidence);
+    }
     ASSERT_EQ(depth.width, static_cast<uint32_t>(camera.image_width));
     ASSERT_EQ(depth.height, static_cast<uint32_t>(camera.image_height));
     EXPECT_EQ(info.width, depth.width);
@@ -462,8 +524,9 @@ TEST(NodeLiveTest, SequenceDepthPointsAndBadFrames) {
   const DepthMetrics node = AverageDepthMetrics(node_metrics);
   const DepthMetrics tool = AverageDepthMetrics(tool_metrics);
   std::printf("[ node     ] AbsRel node %.5f, corridor_depth %.5f; coverage %.4f / %.4f; "
-              "worst point difference %.2g m\n",
-              node.abs_rel, tool.abs_rel, node.coverage, tool.coverage, worst_point);
+              "worst point difference %.2g m; lowest confidence %.3f\n",
+              node.abs_rel, tool.abs_rel, node.coverage, tool.coverage, worst_point,
+              lowest_confidence);
   EXPECT_NEAR(node.abs_rel, tool.abs_rel, 0.01);
   EXPECT_LT(node.abs_rel, 0.1);  // And a corridor, not an empty map.
   EXPECT_GT(node.coverage, 0.5);
@@ -501,8 +564,8 @@ TEST(NodeLiveTest, CameraHeightFromTf) {
   MakeSequence(dir, &sequence, 3);
   if (HasFatalFailure()) return;
   g_deadline = Clock::now() + std::chrono::minutes(3);
-  LiveNode live(dir, {"_base_frame:=base_footprint"});
-  ASSERT_TRUE(live.Start()) << "no ROS master:\n" << ReadText(dir.Path("master.log"));
+  LiveNode live(dir, {"_base_frame:=base_footprint", "_depth_encoding:=16UC1"});
+  ASSERT_TRUE(live.Start()) << "no ROS master:\n" << Master::Get().Log();
   Received received;
   Graph graph(&received, false);
   ASSERT_TRUE(WaitFor([&] { return graph.Connected(); }, 30)) << live.NodeLog();
@@ -548,8 +611,33 @@ TEST(NodeLiveTest, CameraHeightFromTf) {
     const auto& geometry = received.geometry[StampText(t)];
     EXPECT_EQ(Value(geometry, "status"), "ok");
     EXPECT_NEAR(std::atof(Value(geometry, "camera_height_m").c_str()), camera.mount_height, 1e-6);
+    // ~depth_encoding:=16UC1: millimetres, the truth's within 5% at the bottom centre (floor).
+    const sensor_msgs::Image& depth = *received.depth[StampKey(t)];
+    EXPECT_EQ(depth.encoding, "16UC1");
+    ASSERT_EQ(depth.step, 2 * depth.width);
+    const cv::Mat metres = DepthFromMessage(depth);
+    const int row = camera.image_height - 10, col = camera.image_width / 2;
+    const float truth = sequence.truth[i].at<float>(row, col);
+    EXPECT_NEAR(metres.at<float>(row, col), truth, 0.05 * truth);
   }
   EXPECT_TRUE(live.NodeRunning());
+}
+
+// A bad parameter stops the node at start-up (exit 2) naming it; ~min_confidence is one of the
+// options it reads.
+TEST(NodeLiveTest, BadParameterNamedAtStartUp) {
+  Scratch dir;
+  g_deadline = Clock::now() + std::chrono::minutes(1);
+  for (const auto& [arg, name] : std::vector<std::pair<std::string, std::string>>{
+           {"_min_confidence:=1.5", "min_confidence"},
+           {"_depth_encoding:=mono16", "depth_encoding"},
+           {"_solver:=nonesuch", "nonesuch"}}) {
+    LiveNode live(dir, {"_camera_height:=0.7", arg});
+    ASSERT_TRUE(live.Start()) << "no ROS master:\n" << Master::Get().Log();
+    EXPECT_TRUE(WaitFor([&] { return !live.NodeRunning(); }, 20)) << arg;
+    EXPECT_EQ(live.ExitCode(), 2) << arg;
+    EXPECT_NE(live.NodeLog().find(name), std::string::npos) << arg << ": " << live.NodeLog();
+  }
 }
 
 }  // namespace
