@@ -558,13 +558,14 @@ TEST(NodeLiveTest, SequenceDepthPointsAndBadFrames) {
 
 // ~base_frame: the camera height from TF (a static base_footprint -> camera transform). A frame
 // before the transform exists gets no depth and says why; the frames after it do, with the height.
+// Also ~depth_encoding:=16UC1 and ~sequence:=false (independent frames).
 TEST(NodeLiveTest, CameraHeightFromTf) {
   Scratch dir;
   Sequence sequence;
   MakeSequence(dir, &sequence, 3);
   if (HasFatalFailure()) return;
   g_deadline = Clock::now() + std::chrono::minutes(3);
-  LiveNode live(dir, {"_base_frame:=base_footprint", "_depth_encoding:=16UC1"});
+  LiveNode live(dir, {"_base_frame:=base_footprint", "_depth_encoding:=16UC1", "_sequence:=false"});
   ASSERT_TRUE(live.Start()) << "no ROS master:\n" << Master::Get().Log();
   Received received;
   Graph graph(&received, false);
