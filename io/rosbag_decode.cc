@@ -24,6 +24,22 @@ std::string BagStamp::ToString() const {
   return text;
 }
 
+std::string DepthTopicPrefix(const std::string& image_topic) {
+  std::string topic = image_topic;
+  while (topic.size() > 1 && topic.back() == '/') topic.pop_back();
+  for (const char* transport : {"/compressed", "/compressedDepth", "/theora"}) {
+    const std::string suffix = transport;
+    if (topic.size() > suffix.size() &&
+        topic.compare(topic.size() - suffix.size(), suffix.size(), suffix) == 0) {
+      topic.resize(topic.size() - suffix.size());
+      break;
+    }
+  }
+  const size_t slash = topic.rfind('/');
+  if (slash == std::string::npos || slash == 0) return "/";
+  return topic.substr(0, slash);
+}
+
 bool IsImageTopicType(const std::string& type) {
   return type == "sensor_msgs/Image" || type == "sensor_msgs/CompressedImage";
 }

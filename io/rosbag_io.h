@@ -74,6 +74,11 @@ Status DecodeRawImage(const std::string& encoding, int width, int height, int st
 Status DecodeCompressedImage(const std::string& format, const std::vector<uint8_t>& data,
                              cv::Mat* bgr);
 
+// The namespace a camera's depth goes under: the image topic's parent, after dropping a transport
+// suffix (/compressed, /compressedDepth, /theora), e.g. "/cam/image_raw/compressed" -> "/cam";
+// "/" for a topic at the root.
+std::string DepthTopicPrefix(const std::string& image_topic);
+
 // Reads the image messages of one topic in bag order (the order of their receive times).
 class BagImageReader {
  public:
@@ -90,15 +95,17 @@ class BagImageReader {
   std::unique_ptr<Impl> impl_;
 };
 
-// Writes depth maps as a ROS 1 bag: sensor_msgs/Image in 16UC1 millimetres (0 = none, the
-// RealSense/ZED convention) plus the matching sensor_msgs/CameraInfo on the same stamps. The bag
-// is written under "<path>.part" and renamed by Close(), so an interrupted run never leaves a
-// half-written bag under the final name.
+// Writes depth maps as a ROS 1 bag: sensor_msgs/Image in the live node's encodings (32FC1 metres
+// with NaN = none, or 16UC1 millimetres with 0 = none; io/ros_depth_message.h) plus the matching
+// sensor_msgs/CameraInfo on the same stamps. The bag is written under "<path>.part" and renamed by
+// Close(), so an interrupted run never leaves a half-written bag under the final name.
 class BagDepthWriter {
  public:
   ~BagDepthWriter();
-  static Status Open(const std::string& bag_path, std::unique_ptr<BagDepthWriter>* writer);
-  // `depth_m` is CV_32F metres (0 or non-finite = none), the camera's size.
+  // `encoding`: "32FC1" or "16UC1" (InvalidArgument otherwise).
+  static Status Open(const std::string& bag_path, std::unique_ptr<BagDepthWriter>* writer,
+                     const std::string& encoding = "32FC1");
+  // `depth_m` is CV_32F metres (0, negative or non-finite = none), the camera's size.
   Status Write(const std::string& image_topic, const std::string& info_topic,
                const BagStamp& stamp, const std::string& frame_id, const cv::Mat& depth_m,
                const Camera& camera);

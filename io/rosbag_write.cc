@@ -6,7 +6,7 @@
 #include <sensor_msgs/CameraInfo.h>
 #include <sensor_msgs/Image.h>
 
-#include "io/image_io.h"
+#include "io/ros_depth_message.h"
 #include "io/rosbag_io.h"
 
 namespace corridor {
@@ -16,6 +16,7 @@ namespace fs = std::filesystem;
 struct BagDepthWriter::Impl {
   std::string path;
   std::string part_path;
+  std::string encoding;  // 32FC1 or 16UC1.
   rosbag::Bag bag;
   bool open = false;
 };
@@ -26,8 +27,13 @@ BagDepthWriter::~BagDepthWriter() {
   if (impl_ && impl_->open) (void)Close();
 }
 
-Status BagDepthWriter::Open(const std::string& bag_path, std::unique_ptr<BagDepthWriter>* writer) {
+Status BagDepthWriter::Open(const std::string& bag_path, std::unique_ptr<BagDepthWriter>* writer,
+                           const std::string& encoding) {
+  if (!IsDepthEncoding(encoding)) {
+    return Status::InvalidArgument("depth encoding '" + encoding + "' (supported: 32FC1, 16UC1)");
+  }
   auto impl = std::make_unique<Impl>();
+  impl->encoding = encoding;
   impl->path = bag_path;
   impl->part_path = bag_path + ".part";
   std::error_code ec;
@@ -60,30 +66,11 @@ Status BagDepthWriter::Write(const std::string& image_topic, const std::string& 
   sensor_msgs::Image image;
   image.header.stamp = time;
   image.header.frame_id = frame_id;
-  image.height = static_cast<uint32_t>(depth_m.rows);
-  image.width = static_cast<uint32_t>(depth_m.cols);
-  image.encoding = "16UC1";
-  image.is_bigendian = 0;  // uint16 little-endian, as on every ROS host.
-  image.step = image.width * 2;
-  const cv::Mat mm = DepthToMillimetres(depth_m);
-  image.data.resize(static_cast<size_t>(image.step) * image.height);
-  for (int r = 0; r < mm.rows; ++r) {
-    const uint16_t* src = mm.ptr<uint16_t>(r);
-    uint8_t* dst = image.data.data() + static_cast<size_t>(r) * image.step;
-    for (int c = 0; c < mm.cols; ++c) {
-      dst[2 * c] = static_cast<uint8_t>(src[c] & 0xFF);
-      dst[2 * c + 1] = static_cast<uint8_t>(src[c] >> 8);
-    }
-  }
+  const Status filled = FillDepthImage(depth_m, impl_->encoding, &image);
+  if (!filled.ok()) return Status::InvalidArgument(impl_->path + ": " + filled.message());
   sensor_msgs::CameraInfo info;
   info.header = image.header;
-  info.width = image.width;
-  info.height = image.height;
-  info.distortion_model = "plumb_bob";
-  info.D.assign(camera.distortion.begin(), camera.distortion.end());
-  info.K = {camera.fx, 0, camera.cx, 0, camera.fy, camera.cy, 0, 0, 1};
-  info.R = {1, 0, 0, 0, 1, 0, 0, 0, 1};
-  info.P = {camera.fx, 0, camera.cx, 0, 0, camera.fy, camera.cy, 0, 0, 0, 1, 0};
+  FillCameraInfo(camera, &info);
   try {
     impl_->bag.write(image_topic, time, image);
     impl_->bag.write(info_topic, time, info);

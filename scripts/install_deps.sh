@@ -8,6 +8,8 @@ PACKAGES=(
   libeigen3-dev libceres-dev libopencv-dev libgoogle-glog-dev libgflags-dev libyaml-cpp-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   librosbag-storage-dev libsensor-msgs-dev python3-rosbag python3-sensor-msgs
+  libroscpp-dev libimage-transport-dev libvisualization-msgs-dev libdiagnostic-msgs-dev
+  libtf2-ros-dev libtf2-msgs-dev libstd-msgs-dev libgeometry-msgs-dev python3-rosmaster
   python3 python3-pil
 )
 

@@ -54,9 +54,14 @@ DEFINE_string(camera_info_topic, "",
 DEFINE_bool(write_cloud, false,
             "Write DIR/<scene>/cloud/<frame>.ply: binary PLY, x y z (camera frame, m) + colour");
 DEFINE_string(output_bag, "",
-              "Write the depth maps to this ROS 1 bag: 16UC1 mm on <image_topic>/corridor_depth "
-              "plus CameraInfo on <image_topic>/corridor_depth/camera_info, at the input stamps "
-              "(frames without a stamp: 1 s + index x frame period)");
+              "Write the depth maps to this ROS 1 bag: <prefix>/depth/image plus CameraInfo on "
+              "<prefix>/depth/camera_info, at the input stamps (frames without a stamp: 1 s + "
+              "index x frame period), as the live node corridor_depth_node publishes them");
+DEFINE_string(output_bag_prefix, "",
+              "--output_bag's topic namespace (default: the image topic's parent without a "
+              "transport suffix, /cam/image_raw/compressed -> /cam; /<scene> for other inputs)");
+DEFINE_string(depth_encoding, "32FC1",
+              "--output_bag's depth encoding: 32FC1 (metres, NaN = none) or 16UC1 (mm, 0 = none)");
 
 namespace corridor {
 namespace {
@@ -138,8 +143,8 @@ struct BagOutput {
 #ifdef CORRIDOR_HAVE_ROSBAG
   BagDepthWriter* writer = nullptr;  // The open output bag; null without --output_bag.
 #endif
-  std::string depth_topic;  // <image topic>/corridor_depth.
-  std::string info_topic;   // <depth topic>/camera_info.
+  std::string depth_topic;  // <prefix>/depth/image.
+  std::string info_topic;   // <prefix>/depth/camera_info.
   std::string frame_id;     // The input's CameraInfo frame_id, else "camera".
 };
 
@@ -359,7 +364,7 @@ int Main(int argc, char** argv) {
 #ifdef CORRIDOR_HAVE_ROSBAG
   std::unique_ptr<BagDepthWriter> bag_writer;
   if (!FLAGS_output_bag.empty()) {
-    status = BagDepthWriter::Open(FLAGS_output_bag, &bag_writer);
+    status = BagDepthWriter::Open(FLAGS_output_bag, &bag_writer, FLAGS_depth_encoding);
     if (!status.ok()) return Usage(status.message());
   }
 #endif
@@ -369,10 +374,15 @@ int Main(int argc, char** argv) {
 #ifdef CORRIDOR_HAVE_ROSBAG
     bag.writer = bag_writer.get();
 #endif
-    const std::string base = scene.image_topic.empty() ? "/" + scene.name + "/image"
-                                                       : scene.image_topic;
-    bag.depth_topic = base + "/corridor_depth";
-    bag.info_topic = bag.depth_topic + "/camera_info";
+    std::string prefix = FLAGS_output_bag_prefix;
+#ifdef CORRIDOR_HAVE_ROSBAG
+    if (prefix.empty()) {
+      prefix = scene.image_topic.empty() ? "/" + scene.name : DepthTopicPrefix(scene.image_topic);
+    }
+#endif
+    if (!prefix.empty() && prefix.back() == '/') prefix.pop_back();
+    bag.depth_topic = prefix + "/depth/image";
+    bag.info_topic = prefix + "/depth/camera_info";
     bag.frame_id = scene.frame_id.empty() ? "camera" : scene.frame_id;
     int scene_frames = 0, scene_skipped = 0;
     const int scene_failed =
