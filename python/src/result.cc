@@ -1,0 +1,53 @@
+#include "python/src/result.h"
+
+#include <limits>
+#include <type_traits>
+
+#include "python/src/common.h"
+
+namespace corridor {
+namespace python {
+namespace {
+
+// The frame confidence, once RecoverDepthResult has one; NaN before.
+template <typename R, typename = void>
+struct HasConfidence : std::false_type {};
+template <typename R>
+struct HasConfidence<R, std::void_t<decltype(std::declval<R&>().confidence)>> : std::true_type {};
+
+template <typename R>
+double ConfidenceOf(const R& result) {
+  if constexpr (HasConfidence<R>::value) {
+    return result.confidence;
+  } else {
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+}
+
+}  // namespace
+
+PyResult MakeResult(RecoverDepthResult&& result, int rows, int cols) {
+  if (IsCallerError(result.status)) ThrowStatus(result.status);
+  PyResult out;
+  out.status = result.status;
+  out.has_geometry = result.has_geometry;
+  out.geometry = result.geometry;
+  out.junctions = std::move(result.junctions);
+  out.junctions.segments.clear();
+  out.solver_summary = result.solver_summary;
+  out.ceiling_found = result.ceiling.found;
+  out.end_wall_found = result.end_wall.found;
+  out.fallback = result.fallback;
+  out.width_held = result.width_held;
+  out.walls_scaled = result.walls_scaled;
+  out.ceiling_held = result.ceiling_held;
+  out.junctions_tracked = result.junctions_tracked;
+  out.ceiling_trusted = result.ceiling_trusted;
+  out.confidence = ConfidenceOf(result);
+  out.times = result.times;
+  out.depth = DepthToArray(result.depth, rows, cols);
+  return out;
+}
+
+}  // namespace python
+}  // namespace corridor
