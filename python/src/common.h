@@ -43,8 +43,9 @@ ImageInput ImageFromArray(const py::handle& image, bool rgb);
 py::array ArrayFromImage(const cv::Mat& image);
 
 // A CV_32F depth image as a float32 HxW array in metres with NaN where there is no estimate (0,
-// negative or non-finite in `depth`); all NaN of rows x cols when `depth` is empty.
-py::array_t<float> DepthToArray(const cv::Mat& depth, int rows, int cols);
+// negative or non-finite in `depth`); all NaN of rows x cols when `depth` is empty. The array
+// takes over `depth`'s pixels (no copy) and marks "no estimate" in place.
+py::array_t<float> DepthToArray(cv::Mat&& depth, int rows, int cols);
 
 // An array-like of N points (N x 2, pixels) as points; ValueError naming `what` otherwise.
 std::vector<Eigen::Vector2d> PointsFromArray(const py::handle& points, const char* what);

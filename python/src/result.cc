@@ -45,7 +45,7 @@ PyResult MakeResult(RecoverDepthResult&& result, int rows, int cols) {
   out.ceiling_trusted = result.ceiling_trusted;
   out.confidence = ConfidenceOf(result);
   out.times = result.times;
-  out.depth = DepthToArray(result.depth, rows, cols);
+  out.depth = DepthToArray(std::move(result.depth), rows, cols);
   return out;
 }
 
