@@ -13,10 +13,18 @@ enum class StatusCode {
   kIoError,              // A file that exists but cannot be read or written.
   kNoCorridorFound,      // The image holds no usable pair of junction lines.
   kImplausibleGeometry,  // The lines were found, but the geometry they give is not a corridor.
+  kLowConfidence,        // A plausible corridor, but the evidence for it is too weak to trust.
   kInternal,             // A numerical failure that no input should cause.
 };
 
 const char* StatusCodeToString(StatusCode code);
+// The code as one snake_case word, for files and logs: "no_corridor_found", "io_error", ...
+const char* StatusCodeName(StatusCode code);
+
+// What a frame's status means to its user: "ok" (depth recovered), "refused" (the image was read
+// but its corridor could not be trusted: none found, implausible, low confidence) or "failed" (a
+// bad input, a missing or unreadable file, an internal error).
+const char* StatusClass(StatusCode code);
 
 // A result code with a human-readable message. Cheap to copy; no exceptions.
 class Status {
@@ -32,6 +40,7 @@ class Status {
   static Status ImplausibleGeometry(std::string m) {
     return {StatusCode::kImplausibleGeometry, std::move(m)};
   }
+  static Status LowConfidence(std::string m) { return {StatusCode::kLowConfidence, std::move(m)}; }
   static Status Internal(std::string m) { return {StatusCode::kInternal, std::move(m)}; }
 
   bool ok() const { return code_ == StatusCode::kOk; }

@@ -9,6 +9,8 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "io/exif_orientation.h"
+
 #include "io/file_util.h"
 
 namespace corridor {
@@ -68,7 +70,8 @@ bool JpegHasEnd(const std::string& b) {
 }
 
 // Reads and decodes a file with IMREAD_UNCHANGED; every failure is a status naming the path.
-Status DecodeFile(const std::string& path, cv::Mat* image) {
+// `orientation` (may be null) receives the file's EXIF orientation (1 = upright or none).
+Status DecodeFile(const std::string& path, cv::Mat* image, int* orientation = nullptr) {
   std::string bytes;
   Status status = ReadFileToString(path, &bytes);
   if (!status.ok()) return status;
@@ -86,15 +89,18 @@ Status DecodeFile(const std::string& path, cv::Mat* image) {
     return Status::IoError(path + ": cannot decode image: " + e.what());
   }
   if (image->empty()) return Status::IoError(path + ": not a readable image file");
+  if (orientation != nullptr) *orientation = ExifOrientation(bytes);
   return Status::Ok();
 }
 
 }  // namespace
 
-Status ReadColorImage(const std::string& path, cv::Mat* bgr) {
+Status ReadColorImage(const std::string& path, cv::Mat* bgr, ImageOrientation orientation) {
   cv::Mat image;
-  Status status = DecodeFile(path, &image);
+  int exif = 1;
+  Status status = DecodeFile(path, &image, &exif);
   if (!status.ok()) return status;
+  if (orientation == ImageOrientation::kUpright) ApplyExifOrientation(exif, &image);
   try {
     if (image.depth() == CV_16U) {
       image.convertTo(image, CV_8U, 1.0 / 257.0);  // 65535 -> 255, rounded.

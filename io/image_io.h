@@ -8,9 +8,16 @@
 
 namespace corridor {
 
+// How a photo with an EXIF orientation tag is read.
+enum class ImageOrientation {
+  kAsStored,  // The pixels as stored (a calibration is for these).
+  kUpright,   // Turned as the tag says, as photo viewers show it.
+};
+
 // Reads any colour, grey, 16-bit or alpha image as 8-bit BGR. A missing, empty, truncated or
 // non-image file gets a status that names the path.
-Status ReadColorImage(const std::string& path, cv::Mat* bgr);
+Status ReadColorImage(const std::string& path, cv::Mat* bgr,
+                      ImageOrientation orientation = ImageOrientation::kAsStored);
 
 // Reads a 16-bit millimetre depth PNG into CV_32F metres (0 = invalid).
 Status ReadDepthPng(const std::string& path, cv::Mat* depth_m);
