@@ -33,6 +33,9 @@ def parse_args():
                         help="horizontal field of view, degrees, without --camera (default 60)")
     parser.add_argument("--camera_height", type=float,
                         help="camera height above the floor, m (overrides the calibration's)")
+    parser.add_argument("--upright", action="store_true",
+                        help="turn the photo as its EXIF orientation says (a phone photo "
+                             "without a calibration; a calibration is for the stored pixels)")
     parser.add_argument("--solver", default="joint", help="grid, closed_form, lm or joint")
     parser.add_argument("--max_depth", type=float, default=15.0,
                         help="top of the colour scale, m (default 15)")
@@ -54,7 +57,7 @@ def main():
     photo = pathlib.Path(args.photo)
     out_dir = pathlib.Path(args.output_dir)
     try:
-        image = cd.read_image(str(photo))  # uint8 HxWx3, BGR
+        image = cd.read_image(str(photo), upright=args.upright)  # uint8 HxWx3, BGR
         height, width = image.shape[:2]
         camera = (cd.Camera.from_file(args.camera) if args.camera
                   else cd.Camera.from_hfov(args.hfov, width, height))

@@ -95,14 +95,16 @@ void BindCamera(py::module_& m) {
 
   m.def(
       "read_image",
-      [](const std::string& path) {
+      [](const std::string& path, bool upright) {
         cv::Mat bgr;
-        ThrowIfError(ReadColorImage(path, &bgr));
+        ThrowIfError(ReadColorImage(
+            path, &bgr, upright ? ImageOrientation::kUpright : ImageOrientation::kAsStored));
         return ArrayFromImage(bgr);
       },
-      py::arg("path"),
-      "Reads any colour, grey, 16-bit or alpha image as uint8 HxWx3 BGR, as the tools do (the "
-      "pixels as stored: no EXIF rotation).");
+      py::arg("path"), py::kw_only(), py::arg("upright") = false,
+      "Reads any colour, grey, 16-bit or alpha image as uint8 HxWx3 BGR, as the tools do: the "
+      "pixels as stored (a calibration is for these), or with upright=True turned as a photo's "
+      "EXIF orientation says.");
   m.def(
       "write_depth_png",
       [](const std::string& path, const py::array_t<float, py::array::c_style |

@@ -43,19 +43,7 @@ bool IsCallerError(const Status& status) {
          status.code() == StatusCode::kIoError;
 }
 
-const char* StatusClassName(const Status& status) {
-  switch (status.code()) {
-    case StatusCode::kOk:
-      return "ok";
-    case StatusCode::kInvalidArgument:
-    case StatusCode::kNotFound:
-    case StatusCode::kIoError:
-    case StatusCode::kInternal:
-      return "failed";
-    default:  // No corridor, implausible geometry, low confidence: the frame's own outcome.
-      return "refused";
-  }
-}
+const char* StatusClassName(const Status& status) { return StatusClass(status.code()); }
 
 ImageInput ImageFromArray(const py::handle& image, bool rgb) {
   if (!py::isinstance<py::array>(image)) {

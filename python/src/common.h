@@ -27,7 +27,7 @@ inline void ThrowIfError(const Status& status) {
 }
 // A caller's mistake rather than a frame's outcome: invalid argument, not found, i/o error.
 bool IsCallerError(const Status& status);
-// "ok", "refused" (no corridor, implausible geometry, low confidence) or "failed".
+// "ok", "refused" (no corridor, implausible geometry, low confidence) or "failed" (StatusClass).
 const char* StatusClassName(const Status& status);
 
 // An image given as a numpy array: uint8 or uint16, HxW (grey), HxWx3 (BGR, or RGB with `rgb`)

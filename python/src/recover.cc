@@ -40,24 +40,16 @@ py::dict Times(const StageTimes& t) {
   return d;
 }
 
-std::string CodeName(StatusCode code) {
-  std::string name = StatusCodeToString(code);
-  for (char& c : name) {
-    if (c == ' ' || c == '/') c = '_';
-  }
-  return name;
-}
-
 }  // namespace
 
 void BindRecover(py::module_& m) {
   py::class_<Status>(m, "Status", "Why a frame has no depth, or ok.")
       .def_property_readonly("ok", &Status::ok)
-      .def_property_readonly("code", [](const Status& s) { return CodeName(s.code()); },
-                             "E.g. 'ok', 'no_corridor_found', 'implausible_geometry'.")
+      .def_property_readonly("code", [](const Status& s) { return StatusCodeName(s.code()); },
+                             "E.g. 'ok', 'no_corridor_found', 'low_confidence', 'invalid_argument'.")
       .def_property_readonly("message", &Status::message)
       .def_property_readonly("status_class", &StatusClassName,
-                             "'ok', 'refused' (the frame shows no usable corridor) or 'failed'.")
+                             "'ok', 'refused' (no corridor, implausible geometry, low confidence) or 'failed'.")
       .def("__str__", &Status::ToString)
       .def("__repr__", [](const Status& s) { return "<Status " + s.ToString() + ">"; });
 

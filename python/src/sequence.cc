@@ -4,9 +4,9 @@
 #include <memory>
 #include <mutex>
 
+#include "pipeline/depth_sequence.h"
 #include "python/src/bindings.h"
 #include "python/src/common.h"
-#include "python/src/depth_sequence_standin.h"
 #include "python/src/options.h"
 #include "python/src/result.h"
 

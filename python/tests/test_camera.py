@@ -59,6 +59,8 @@ def test_read_image_and_write_depth_png(tmp_path):
     bgr = cd.read_image(str(tmp_path / "red.png"))
     assert bgr.shape == (4, 5, 3) and bgr.dtype == np.uint8
     assert (bgr[..., 2] == 200).all() and (bgr[..., :2] == 0).all()
+    # Without an EXIF orientation, upright reads the same pixels.
+    np.testing.assert_array_equal(cd.read_image(str(tmp_path / "red.png"), upright=True), bgr)
 
     depth = np.array([[1.0, np.nan], [0.0, 2.0004]], np.float32)
     cd.write_depth_png(str(tmp_path / "depth.png"), depth)
