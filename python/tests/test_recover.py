@@ -155,3 +155,20 @@ def test_the_call_releases_the_gil(single_frame):
     assert during_python == 0
     assert during_metrics == 0 and metrics_seconds > 0.005
     assert during_recover > 10
+
+
+def test_options_by_field_and_flag_name(single_frame):
+    image_path, camera_path, _ = single_frame
+    image = cd.read_image(str(image_path))
+    camera = cd.Camera.from_file(str(camera_path))
+    near = cd.recover_depth(image, camera, max_range=5.0)  # The tools' flag name.
+    assert near.ok and np.nanmax(near.depth) <= 5.0
+    full = cd.recover_depth(image, camera)
+    assert np.nanmax(full.depth) > 5.0
+    # A tool flag and the RecoverDepthOptions field it stands for give the same result.
+    by_flag = cd.recover_depth(image, camera, end_wall=False, inner_line_check=False)
+    by_field = cd.recover_depth(image, camera, estimate_end_wall=False,
+                                ceiling_checks_inner_lines=False)
+    np.testing.assert_array_equal(by_flag.depth, by_field.depth)
+    assert not by_flag.end_wall_found
+    assert {"solver", "max_range", "roi_top", "hough_angle_window"} <= set(cd.option_names())
