@@ -8,6 +8,7 @@ PYBIND11_MODULE(corridor_depth, m) {
       "Images are numpy arrays: uint8 (or uint16) HxWx3 in BGR order as OpenCV reads them\n"
       "(pass rgb=True for RGB), HxWx4 BGRA, or HxW grey. Depth is float32 HxW in metres, NaN\n"
       "where there is no estimate. Angles are in radians, lengths in metres.";
+  m.attr("__version__") = CORRIDOR_VERSION;
   corridor::python::BindCamera(m);
   corridor::python::BindRecover(m);
   corridor::python::BindSequence(m);

@@ -7,6 +7,13 @@ import numpy as np
 import corridor_depth as cd
 
 
+def test_version_is_the_projects():
+    import os
+    import re
+    cmake = open(os.path.join(os.environ["CORRIDOR_SOURCE_DIR"], "CMakeLists.txt")).read()
+    assert cd.__version__ == re.search(r"project\(corridor_depth VERSION ([\d.]+)", cmake)[1]
+
+
 def test_from_hfov():
     cam = cd.Camera.from_hfov(60.0, 640, 480)
     fx = 320.0 / math.tan(math.radians(30.0))  # Half the width over tan(hfov / 2).
