@@ -43,7 +43,7 @@ cv::Mat SurfaceLabels(const Camera& camera, const CorridorGeometry& g) {
 cv::Mat ComputeConfidenceMask(const cv::Mat& bgr, const cv::Mat& depth, const Camera& camera,
                               const CorridorGeometry& geometry, const ConfidenceOptions& options) {
   cv::Mat mask(bgr.size(), CV_8U, cv::Scalar(255));
-  if (!depth.empty()) mask.setTo(0, depth <= 0);
+  if (!depth.empty()) mask.setTo(0, ~(depth > 0));  // None: 0 or NaN.
   const cv::Mat labels = SurfaceLabels(camera, geometry);
 
   // Floor and walls: colour against the surface's median colour (the median filter removes grout

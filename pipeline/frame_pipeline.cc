@@ -21,7 +21,7 @@ int64_t FramePipeline::Run(const Source& source, const Sink& sink) {
       } else if (frame.camera == nullptr) {
         frame.result.status = Status::InvalidArgument("frame " + frame.name + " has no camera");
       } else {
-        recoverer_.Detect(frame.image, *frame.camera, &frame.result, &track);
+        recoverer_.Detect(frame.image, *frame.camera, &frame.result, sequence_ ? &track : nullptr);
       }
       if (!queue.Push(std::move(frame))) break;  // The consumer stopped.
     }
@@ -33,7 +33,8 @@ int64_t FramePipeline::Run(const Source& source, const Sink& sink) {
   while (auto frame = queue.Pop()) {
     if (stopped) continue;  // Drain so that the extraction thread can finish.
     if (frame->result.ReadyToReconstruct() && frame->camera != nullptr) {
-      recoverer_.Reconstruct(*frame->camera, &frame->result, prior.Previous());
+      recoverer_.Reconstruct(*frame->camera, &frame->result,
+                            sequence_ ? prior.Previous() : nullptr);
       prior.Update(frame->result);
     }
     ++delivered;

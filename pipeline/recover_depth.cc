@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <mutex>
 #include <sstream>
 
@@ -29,6 +30,16 @@ void BuildOpenCvTablesOnce() {
     cv::Mat lab;
     cv::cvtColor(cv::Mat(1, 1, CV_8UC3, cv::Scalar::all(128)), lab, cv::COLOR_BGR2Lab);
   });
+}
+
+// The rasterisers write 0 where they have no estimate; the pipeline's depth says so with NaN,
+// which depth_image_proc and point-cloud code read as no point (0 would be a point at the origin).
+void MarkNoEstimateNaN(cv::Mat* depth) {
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  for (int v = 0; v < depth->rows; ++v) {
+    float* row = depth->ptr<float>(v);
+    for (int u = 0; u < depth->cols; ++u) row[u] = row[u] > 0 ? row[u] : nan;
+  }
 }
 
 double SecondsSince(Clock::time_point start) {
@@ -107,6 +118,8 @@ bool RecoverDepthOptions::Check(std::string* why) const {
     reason = "max_ceiling_change must be in [0, 1) (0 = off)";
   } else if (!(ceiling_height >= 0 && std::isfinite(ceiling_height))) {
     reason = "ceiling_height must be >= 0 (0 = unknown)";
+  } else if (!(min_confidence >= 0 && min_confidence <= 1)) {
+    reason = "min_confidence must be in [0, 1] (0 = never refuse on confidence)";
   } else if (search_max_width != 0 && search_max_width < 64) {
     reason = "search_max_width must be 0 (full resolution) or at least 64 px";
   } else if (!perception.Check(&reason)) {
@@ -119,6 +132,8 @@ bool RecoverDepthOptions::Check(std::string* why) const {
     reason = "end_wall: " + reason;
   } else if (!inner_line.Check(&reason)) {
     reason = "inner_line: " + reason;
+  } else if (!vertical_crossings.Check(&reason)) {
+    reason = "vertical_crossings: " + reason;
   }
   if (reason.empty()) return true;
   if (why != nullptr) *why = reason;
@@ -441,6 +456,7 @@ Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* res
     bool lower_taken = false;
     if (options_.ceiling_checks_baseboards && result->junctions.status.ok()) {
       lower_taken = CheckBaseboards(camera, search, &edges, &geometry, result);
+      result->lower_line_taken = lower_taken;
     }
     // A lower line taken has made the two ceiling sides agree: nothing for the inner-line check.
     if (options_.ceiling_checks_inner_lines && result->junctions.status.ok() && !lower_taken) {
@@ -483,10 +499,47 @@ Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* res
   }
   result->times.end_wall = SecondsSince(stage);
   result->geometry = geometry;
+  // The frame's confidence, from the evidence for this geometry.
+  FrameEvidence& evidence = result->evidence;
+  const JunctionPair& junctions = result->junctions;
+  const JunctionLine* lines[2] = {nullptr, nullptr};
+  if (junctions.status.ok()) {
+    lines[0] = &junctions.left, lines[1] = &junctions.right;
+  } else if (junctions.has_single) {
+    lines[junctions.single_is_left ? 0 : 1] = &junctions.single;
+  }
+  for (int s = 0; s < 2; ++s) {
+    if (lines[s] == nullptr) continue;
+    evidence.junction[s] = lines[s]->confidence;
+    if (!search.bgr.empty()) {
+      const double wall_x = s == 0 ? -geometry.LeftDistance() : geometry.RightDistance();
+      evidence.line_support[s] =
+          CorridorLineSupport(search.bgr, search.camera, geometry, wall_x, geometry.camera_height,
+                              options_.ceiling, &edges);
+      evidence.crossings[s] =
+          CountVerticalCrossings(search.bgr, search.camera, search.scale, geometry, s, *lines[s],
+                                 options_.vertical_crossings, &edges);
+    }
+  }
+  evidence.ceiling_disagreement =
+      search_ceiling ? CeilingDisagreement(result->ceiling, geometry.camera_height) : -1;
+  evidence.corrected = !junctions.status.ok() || result->width_held || result->walls_scaled ||
+                       result->lower_line_taken;
+  evidence.moved_side = result->moved_side;
+  std::string weakest;
+  result->confidence = FrameConfidence(evidence, &weakest);
+  if (result->confidence < options_.min_confidence) {
+    std::ostringstream msg;
+    msg.precision(2);
+    msg << std::fixed << "confidence " << result->confidence << " is below "
+        << options_.min_confidence << ": " << weakest;
+    return finish(Status::LowConfidence(msg.str()));
+  }
   result->has_geometry = true;
 
   stage = Clock::now();
   status = rasterizer_->Render(geometry, camera, &result->depth);
+  if (status.ok()) MarkNoEstimateNaN(&result->depth);
   result->times.rasterize = SecondsSince(stage);
   return finish(status);
 }
@@ -599,6 +652,7 @@ Status DepthRecoverer::MoveInnerWall(const WorkingImage& search, ImageEdges* edg
   if (!status.ok()) return status;
   result->ceiling = ceiling;
   *geometry = moved;
+  result->moved_side = check.side;
   std::ostringstream how;
   how << (check.side == 0 ? "left" : "right") << " wall moved out " << std::setprecision(3)
       << check.factor << "x: its junction is a line inside the floor (its ceiling junction gave "

@@ -17,6 +17,8 @@
 #include "perception/junction_lines.h"
 #include "perception/junction_tracker.h"
 #include "perception/working_image.h"
+#include "perception/vertical_crossings.h"
+#include "pipeline/frame_confidence.h"
 #include "pipeline/inner_line_check.h"
 
 namespace corridor {
@@ -55,6 +57,8 @@ struct RecoverDepthOptions {
                                            // by it (boxes' edges taken on both sides): both are scaled to the trusted ceiling (0 = off).
   bool estimate_end_wall = true;           // Look for a wall across the corridor where both junctions end.
   EndWallDetectorOptions end_wall;         // End-wall search (beyond the paper).
+  double min_confidence = 0.0;             // Frames whose confidence (RecoverDepthResult::confidence) is lower are refused (kLowConfidence); 0 = never.
+  VerticalCrossingOptions vertical_crossings;  // The confidence's count of vertical edges crossing the junctions.
   int search_max_width = 640;              // Wider images are halved (pyrDown) until they fit, one copy shared by the ceiling and end-wall searches, px (0 = full resolution).
 
   bool Check(std::string* why) const;
@@ -85,6 +89,11 @@ struct RecoverDepthResult {
   bool ceiling_held = false;      // True when the previous frame's ceiling height replaced this frame's (max_ceiling_disagreement).
   bool junctions_tracked = false; // True when the junctions were found near the previous frame's (TrackJunctions), not by a whole search.
   bool ceiling_trusted = false;   // True when the ceiling search found the ceiling and both sides, strong enough to compare, agreed within max_ceiling_disagreement.
+  double confidence = 0;          // In [0, 1]: the evidence for the recovered layout (frame_confidence.h); 0 without one.
+                                  // Not the per-pixel model-fit mask of confidence_mask.h.
+  FrameEvidence evidence;         // What the confidence was computed from.
+  int moved_side = -1;            // The wall the inner-line check moved out (0 left, 1 right; -1 none).
+  bool lower_line_taken = false;  // True when the baseboard check took a lower parallel line (ceiling_checks_baseboards).
 
   // After Detect: both junctions were found, or only one (Reconstruct may then use a known width).
   bool ReadyToReconstruct() const {
@@ -93,7 +102,7 @@ struct RecoverDepthResult {
   cv::Mat image;                  // The frame as 8-bit BGR (set by Detect, used by Reconstruct).
   Camera camera;                  // The frame's camera (set by Detect; for drawing the geometry).
   WorkingImage search;            // The frame halved to search_max_width, when Detect halved it for the junction search too (from that halving; else empty).
-  cv::Mat depth;                  // CV_32F metres, camera-frame z, 0 = no estimate.
+  cv::Mat depth;                  // CV_32F metres, camera-frame z, NaN = no estimate.
   StageTimes times;               // Per-stage wall time.
 };
 

@@ -87,7 +87,7 @@ cv::Mat ColorizeDepth(const cv::Mat& depth, double max_depth) {
   depth.convertTo(scaled, CV_8U, 255.0 / max_depth);
   cv::Mat color;
   cv::applyColorMap(scaled, color, cv::COLORMAP_TURBO);
-  color.setTo(cv::Scalar(0, 0, 0), depth <= 0);
+  color.setTo(cv::Scalar(0, 0, 0), ~(depth > 0));  // None: 0 or NaN.
   return color;
 }
 

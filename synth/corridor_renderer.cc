@@ -14,7 +14,7 @@ namespace {
 
 Status CheckPose(const SceneOptions& o, const CameraPose& pose) {
   std::ostringstream msg;
-  const double values[] = {pose.pitch, pose.yaw, pose.offset, pose.height, pose.distance};
+  const double values[] = {pose.pitch, pose.yaw, pose.offset, pose.height, pose.distance, pose.roll};
   for (double v : values) {
     if (!std::isfinite(v)) return Status::InvalidArgument("camera pose has a non-finite value");
   }
@@ -28,6 +28,8 @@ Status CheckPose(const SceneOptions& o, const CameraPose& pose) {
         << o.length << " m)";
   } else if (std::abs(pose.yaw) > 1.2 || std::abs(pose.pitch) > 1.2) {
     msg << "yaw and pitch must be within +-1.2 rad";
+  } else if (std::abs(pose.roll) > 0.5) {
+    msg << "roll must be within +-0.5 rad";
   } else {
     return Status::Ok();
   }
@@ -59,10 +61,12 @@ Status RenderFrame(const CorridorScene& scene, const Camera& camera, const Camer
   Status status = CheckPose(scene.options, pose);
   if (!status.ok()) return status;
 
-  // Camera-from-corridor rotation (geometry.md: R_x(pitch) R_y(yaw), corridor Y down), built
-  // with Eigen; the world frame here has y up, hence the flip.
+  // Camera-from-corridor rotation (geometry.md: R_x(pitch) R_y(yaw), corridor Y down; the roll
+  // about the optical axis comes last), built with Eigen; the world frame here has y up, hence
+  // the flip.
   const Eigen::Matrix3d camera_from_corridor =
-      (Eigen::AngleAxisd(pose.pitch, Eigen::Vector3d::UnitX()) *
+      (Eigen::AngleAxisd(pose.roll, Eigen::Vector3d::UnitZ()) *
+       Eigen::AngleAxisd(pose.pitch, Eigen::Vector3d::UnitX()) *
        Eigen::AngleAxisd(pose.yaw, Eigen::Vector3d::UnitY()))
           .toRotationMatrix();
   const Eigen::Matrix3d flip = Eigen::Vector3d(1, -1, 1).asDiagonal();

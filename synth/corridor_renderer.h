@@ -19,8 +19,10 @@ struct Frame {
 };
 
 // Ray-casts the corridor for a pinhole camera (distortion ignored) at the pose: floor tiles with
-// grout, painted walls with baseboards, recessed doors with frames, ceiling and light panels,
-// boxes, and the end wall; Lambert shading with a light at the camera, falloff with distance,
+// grout (or carpet, runners, stripes), painted walls with baseboards (and wainscots), recessed
+// doors with frames, glass runs (the plane is the surface, the colour the room behind), window
+// bands, ceiling and light panels, solid boxes (clutter, rails, furniture, pillars, sills), and
+// the end wall; a rolled camera when pose.roll != 0; Lambert shading with a light at the camera, falloff with distance,
 // 2x2 supersampling, then blur and sensor noise. Deterministic for given inputs.
 Status RenderFrame(const SceneOptions& options, const Camera& camera, const CameraPose& pose,
                    Frame* frame);

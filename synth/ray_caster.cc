@@ -1,6 +1,7 @@
 #include "synth/ray_caster.h"
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 namespace corridor {
@@ -35,7 +36,40 @@ void Take(double t, const Eigen::Vector3d& normal, const cv::Vec3f& albedo, bool
   }
 }
 
+// A repeatable pseudo-random value in [-1, 1] for an integer cell.
+double CellNoise(int64_t i, int64_t j, uint32_t seed) {
+  uint64_t h = static_cast<uint64_t>(i) * 0x9E3779B97F4A7C15ull ^
+               static_cast<uint64_t>(j) * 0xC2B2AE3D27D4EB4Full ^ (seed * 0x165667B19E3779F9ull);
+  h ^= h >> 31;
+  h *= 0xBF58476D1CE4E5B9ull;
+  h ^= h >> 29;
+  return (h & 0xFFFFFF) / static_cast<double>(0x7FFFFF) - 1.0;
+}
+
 cv::Vec3f FloorAlbedo(const CorridorScene& s, const Eigen::Vector3d& p) {
+  const Paintwork& paint = s.paint;
+  if (paint.stripe_width > 0) {
+    const double half = 0.5 * s.options.width;
+    const double from_wall = half - std::abs(p.x());
+    if (from_wall > paint.stripe_inset && from_wall < paint.stripe_inset + paint.stripe_width) {
+      return paint.stripe_color;
+    }
+  }
+  float texture = 1.0f;
+  if (paint.carpet_grain > 0) {
+    const double g = paint.carpet_grain;
+    const double fine = CellNoise(static_cast<int64_t>(std::floor(p.x() / g)),
+                                  static_cast<int64_t>(std::floor(p.z() / g)), s.options.seed);
+    texture = static_cast<float>(1.0 + paint.carpet_amplitude * fine +
+                                 0.04 * std::sin(2.1 * p.z() + 1.3 * p.x()) * std::sin(0.7 * p.z()));
+  }
+  if (p.x() > paint.runner_x0 && p.x() < paint.runner_x1) {
+    if (p.x() < paint.runner_x0 + paint.runner_border || p.x() > paint.runner_x1 - paint.runner_border) {
+      return paint.runner_border_color * texture;
+    }
+    return paint.runner_color * texture;
+  }
+  if (paint.carpet_grain > 0) return s.floor_color * texture;
   const double tile = s.options.tile_size;
   // Tiles are laid from the centre line, so grout lines run along and across the corridor.
   if (DistanceToGrid(p.x() + 0.5 * tile, tile) < 0.5 * kGrout ||
@@ -55,6 +89,9 @@ cv::Vec3f WallAlbedo(const CorridorScene& s, int side, const Eigen::Vector3d& p)
     }
   }
   if (p.y() < s.options.baseboard_height) return s.baseboard_color;
+  const Paintwork& paint = s.paint;
+  if (p.y() < paint.wainscot_height) return paint.wainscot_color;
+  if (p.y() < paint.wainscot_height + paint.wainscot_cap) return paint.wainscot_cap_color;
   return s.wall_color * Paint(p.z(), p.y(), s.options.seed + (side > 0 ? 7u : 0u));
 }
 
@@ -90,6 +127,71 @@ void HitRecess(const CorridorScene& s, const Door& door, const Eigen::Vector3d& 
     if (tz < t) t = tz, normal = Eigen::Vector3d(0, 0, 1), albedo = door.frame_color;
   }
   Take(t, normal, albedo, false, best);
+}
+
+// The glass run whose pane contains the wall point p, or null.
+const GlassRun* GlassAt(const CorridorScene& s, int side, const Eigen::Vector3d& p) {
+  for (const GlassRun& g : s.glass) {
+    if (g.side == side && p.z() > g.z0 && p.z() < g.z1 && p.y() >= 0 && p.y() < g.top) return &g;
+  }
+  return nullptr;
+}
+
+// Colour seen through the glass at p (on the wall plane) along d: the frame where it is painted,
+// else the room behind (its back wall, floor, ceiling or ends) dimmed or brightened by its light
+// and a faint reflection of the corridor's wall.
+cv::Vec3f GlassAlbedo(const CorridorScene& s, const GlassRun& g, const Eigen::Vector3d& p,
+                      const Eigen::Vector3d& d) {
+  const double along = p.z() - g.z0;
+  if (p.y() < g.base_height || g.top - p.y() < g.mullion_width ||
+      DistanceToGrid(along, g.mullion_spacing) < 0.5 * g.mullion_width ||
+      g.z1 - p.z() < 0.5 * g.mullion_width) {
+    return g.frame_color;
+  }
+  const double wall = g.side * 0.5 * s.options.width;
+  double t = (wall + g.side * g.room_depth - p.x()) / d.x();
+  int surface = 0;  // 0 back wall, 1 floor, 2 ceiling, 3 end.
+  if (d.y() < -kEps && -p.y() / d.y() < t) t = -p.y() / d.y(), surface = 1;
+  if (d.y() > kEps && (s.options.ceiling_height - p.y()) / d.y() < t) {
+    t = (s.options.ceiling_height - p.y()) / d.y(), surface = 2;
+  }
+  if (std::abs(d.z()) > kEps) {
+    const double tz = ((d.z() > 0 ? g.z1 + 2.0 : g.z0 - 2.0) - p.z()) / d.z();
+    if (tz < t) t = tz, surface = 3;
+  }
+  const Eigen::Vector3d q = p + t * d;
+  cv::Vec3f behind;
+  if (surface == 1) {
+    behind = g.room_floor_color;
+  } else if (surface == 2) {
+    behind = cv::Vec3f(0.8f, 0.8f, 0.8f);
+  } else if (surface == 3) {
+    behind = g.room_wall_color * 0.85f;
+  } else if (DistanceToGrid(q.z() - g.z0, 1.5) < 0.03) {
+    behind = g.desk_color * 0.5f;  // Shelf uprights.
+  } else {
+    behind = q.y() < g.desk_height ? g.desk_color : g.room_wall_color;
+  }
+  return behind * static_cast<float>(0.85 * g.room_light) + s.wall_color * 0.1f;
+}
+
+// The window band's pane or frame at the wall point p, or false when p is plain wall.
+bool WindowAt(const CorridorScene& s, int side, const Eigen::Vector3d& p, cv::Vec3f* albedo,
+              bool* emissive) {
+  constexpr double kBandFrame = 0.04;
+  for (const WindowBand& w : s.windows) {
+    if (w.side != side || p.z() < w.z0 || p.z() > w.z1 || p.y() < w.sill || p.y() > w.top) continue;
+    const double period = w.pane + w.mullion;
+    const double f = (p.z() - w.z0) - period * std::floor((p.z() - w.z0) / period);
+    *emissive = !(f < w.mullion || p.y() < w.sill + kBandFrame || p.y() > w.top - kBandFrame);
+    if (!*emissive) {
+      *albedo = w.frame_color;
+    } else {
+      *albedo = (p.y() - w.sill) / (w.top - w.sill) < w.horizon ? w.ground_color : w.sky_color;
+    }
+    return true;
+  }
+  return false;
 }
 
 // Slab test against an obstacle.
@@ -143,10 +245,18 @@ Hit CastRay(const CorridorScene& s, const Eigen::Vector3d& o, const Eigen::Vecto
     const Eigen::Vector3d p = o + t * d;
     if (!best.found || t < best.t) {
       const Door* door = p.y() > 0 ? DoorAt(s, side, p) : nullptr;
+      const GlassRun* glass = door == nullptr ? GlassAt(s, side, p) : nullptr;
+      const Eigen::Vector3d normal(-side, 0, 0);
+      cv::Vec3f albedo;
+      bool emissive = false;
       if (door != nullptr) {
         HitRecess(s, *door, o, d, &best);
+      } else if (glass != nullptr) {
+        Take(t, normal, GlassAlbedo(s, *glass, p, d), false, &best);  // The glass plane is the surface.
+      } else if (WindowAt(s, side, p, &albedo, &emissive)) {
+        Take(t, normal, albedo, emissive, &best);
       } else {
-        Take(t, Eigen::Vector3d(-side, 0, 0), WallAlbedo(s, side, p), false, &best);
+        Take(t, normal, WallAlbedo(s, side, p), false, &best);
       }
     }
   }

@@ -29,7 +29,8 @@ bool SceneOptions::Check(std::string* why) const {
          InRange("baseboard_contrast", baseboard_contrast, 0, 1, why) &&
          InRange("tile_size", tile_size, 0.1, 2, why) && InRange("falloff", falloff, 0, 1, why) &&
          InRange("blur_sigma", blur_sigma, 0, 5, why) &&
-         InRange("noise_sigma", noise_sigma, 0, 50, why);
+         InRange("noise_sigma", noise_sigma, 0, 50, why) &&
+         InRange("furniture", furniture, 0, 1, why);
 }
 
 }  // namespace synth

@@ -23,6 +23,19 @@ struct SceneOptions {
   double noise_sigma = 2.0;           // Gaussian sensor noise, grey levels [0, 50].
   uint32_t seed = 1;                  // Everything random derives from this seed.
 
+  // Parts of real buildings that look like junctions (all off by default; their sizes, colours
+  // and positions are drawn from the seed; docs/generator.md states their ranges).
+  bool handrails = false;             // Rails on brackets a few cm out from the walls (solids).
+  bool chair_rails = false;           // Mouldings on the walls at chair height (solids).
+  bool wainscot = false;              // Two-tone walls: a lower panel and its cap line (paint).
+  double furniture = 0.0;             // Benches, sofas, lockers, radiators, carts, [0, 1] (solids).
+  bool runner = false;                // A carpet runner along the corridor (paint).
+  bool floor_stripes = false;         // Painted stripes along the corridor near the walls (paint).
+  bool carpet = false;                // Carpeted floor: no grout, fine texture (paint).
+  bool glass_walls = false;           // Glass runs in the walls; a lit room shows behind (plane).
+  bool window_bands = false;          // A row of windows above a sill along one wall.
+  bool pillars = false;               // Pillars standing out of the walls, floor to ceiling (solids).
+
   bool Check(std::string* why) const;
 };
 
@@ -33,6 +46,8 @@ struct CameraPose {
   double offset = 0.0;    // tau > 0: right of the centre line, m.
   double height = 0.66;   // Optical centre above the floor, m.
   double distance = 2.0;  // Position along the corridor from its start, m.
+  double roll = 0.0;      // About the optical axis after pitch and yaw, rad; > 0: the image's
+                          // right side shows the scene lower (a nuisance the model lacks).
 };
 
 }  // namespace synth

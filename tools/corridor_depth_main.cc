@@ -111,18 +111,21 @@ Status WriteFrame(const fs::path& scene_dir, const PipelineFrame& frame, const R
   return Status::Ok();
 }
 
-// --skip_existing: the geometry.csv rows, by frame name, of the frames whose depth PNG an earlier
-// run wrote (empty = compute every frame). A frame without its row is computed again.
-Status KeptRows(const fs::path& scene_dir, std::map<std::string, std::string>* kept) {
+// The geometry.csv rows an earlier run wrote into the scene's folder, by frame name and in file
+// order (migrated from an older header), so that a second run keeps them: a frame computed again
+// replaces its own row. With --skip_existing, *kept holds the rows of the frames whose depth PNG
+// is there too, which are not computed again. An unreadable or foreign geometry.csv stops the run
+// before anything is written (it is never overwritten).
+Status EarlierRows(const fs::path& scene_dir, std::map<std::string, std::string>* earlier,
+                   std::vector<std::string>* order, std::map<std::string, std::string>* kept) {
   kept->clear();
-  if (!FLAGS_skip_existing) return Status::Ok();
-  std::map<std::string, std::string> rows;
-  const Status status = ReadGeometryCsvRows((scene_dir / "geometry.csv").string(), &rows);
+  const Status status = ReadGeometryCsvRows((scene_dir / "geometry.csv").string(), earlier, order);
   if (status.code() == StatusCode::kNotFound) return Status::Ok();
   if (!status.ok()) return status;
-  for (auto& [name, row] : rows) {
+  if (!FLAGS_skip_existing) return Status::Ok();
+  for (const auto& [name, row] : *earlier) {
     std::error_code ec;
-    if (fs::exists(scene_dir / "depth" / (name + ".png"), ec)) (*kept)[name] = std::move(row);
+    if (fs::exists(scene_dir / "depth" / (name + ".png"), ec)) (*kept)[name] = row;
   }
   return Status::Ok();
 }
@@ -161,14 +164,15 @@ int RunScene(const InputScene& scene, const DepthRecoverer& recoverer, const std
              const BagOutput& bag, int* frames, int* skipped) {
   const fs::path scene_dir = fs::path(out) / scene.name;
   const std::string csv_path = (scene_dir / "geometry.csv").string();
-  std::map<std::string, std::string> kept;
-  Status write_error = KeptRows(scene_dir, &kept);
+  std::map<std::string, std::string> earlier, kept;
+  std::vector<std::string> earlier_order;
+  Status write_error = EarlierRows(scene_dir, &earlier, &earlier_order, &kept);
   // The camera that was used (from a file, a bag, or --fx/--hfov), so that every run records it.
   if (write_error.ok()) {
     write_error = WriteCameraYaml((scene_dir / "camera_used.yaml").string(), scene.camera);
   }
   if (!write_error.ok()) {
-    std::fprintf(stderr, "corridor_depth: --skip_existing: %s\n", write_error.ToString().c_str());
+    std::fprintf(stderr, "corridor_depth: %s\n", write_error.ToString().c_str());
     return -1;
   }
   std::unique_ptr<FrameSource> input;
@@ -182,16 +186,27 @@ int RunScene(const InputScene& scene, const DepthRecoverer& recoverer, const std
   const int64_t known = scene.kind == InputKind::kImages
                             ? static_cast<int64_t>(scene.frames.size()) : scene.frame_count;
   const int total = static_cast<int>(std::max<int64_t>(0, known - static_cast<int64_t>(kept.size())));
-  // geometry.csv rows in input order ("" = not done yet), and each computed frame's position in
-  // it; the source (extraction thread) appends, the sink (this thread) fills.
+  // This run's geometry.csv rows in input order ("" = not done yet) with their frame names, and
+  // each computed frame's position in them; the source (extraction thread) appends, the sink
+  // (this thread) fills. The earlier run's rows come first, each replaced by this run's when the
+  // frame was computed again; this run's other frames follow in input order.
   std::mutex mutex;
-  std::vector<std::string> rows;
+  std::vector<std::string> rows, row_names;
   std::vector<size_t> position_of;
   const auto write_csv = [&]() {
     GeometryCsv csv;
     std::lock_guard<std::mutex> lock(mutex);
-    for (const auto& row : rows) {
-      if (!row.empty()) csv.AddRow(row);
+    std::map<std::string, const std::string*> now;
+    for (size_t i = 0; i < rows.size(); ++i) {
+      if (!rows[i].empty()) now[row_names[i]] = &rows[i];
+    }
+    for (const auto& name : earlier_order) {
+      const auto found = now.find(name);
+      csv.AddRow(found != now.end() ? *found->second : earlier.at(name));
+      if (found != now.end()) now.erase(found);
+    }
+    for (size_t i = 0; i < rows.size(); ++i) {
+      if (now.count(row_names[i]) != 0) csv.AddRow(rows[i]);
     }
     return WriteTextAtomic(csv_path, csv.Text());
   };
@@ -205,12 +220,19 @@ int RunScene(const InputScene& scene, const DepthRecoverer& recoverer, const std
       const auto row = kept.find(next.name);
       if (row != kept.end()) {
         rows.push_back(row->second);
+        row_names.push_back(next.name);
         ++*skipped;
         continue;
       }
       position_of.push_back(rows.size());
       rows.emplace_back();
-      next.camera = &scene.camera;
+      row_names.push_back(next.name);
+      if (scene.per_image_hfov_deg > 0 && !next.image.empty()) {
+        next.owned_camera = std::make_shared<Camera>(FrameCamera(scene, next.image.size()));
+        next.camera = next.owned_camera.get();
+      } else {
+        next.camera = &scene.camera;
+      }
       *frame = std::move(next);
       return true;
     }
@@ -240,7 +262,13 @@ int RunScene(const InputScene& scene, const DepthRecoverer& recoverer, const std
     progress.Tick(static_cast<int>(frame.index + 1));
     return write_error.ok();
   };
-  const int64_t computed = FramePipeline(recoverer).Run(source, sink);
+  bool sequence = false;
+  const Status resolved = ResolveSequence(scene.kind != InputKind::kImages, &sequence);
+  if (!resolved.ok()) {
+    std::fprintf(stderr, "corridor_depth: %s\n", resolved.message().c_str());
+    return -1;
+  }
+  const int64_t computed = FramePipeline(recoverer, 4, sequence).Run(source, sink);
   progress.Finish();
   if (write_error.ok()) write_error = write_csv();  // Every row, the kept ones included.
   if (!write_error.ok()) {
@@ -258,6 +286,7 @@ int Main(int argc, char** argv) {
       "[--solver=NAME] [--rasterizer=NAME] [--skip_existing] [--image_topic=T] "
       "[--camera_info_topic=T] [--write_cloud] [--output_bag=FILE]\n"
       "--input is an image, a folder of images, a dataset root, a ROS 1 bag or a video");
+  RewriteBareSequenceFlag(argc, argv);
   const Status flags = CheckFlagNames(argc, argv);
   if (!flags.ok()) return Usage(flags.message());
   gflags::ParseCommandLineFlags(&argc, &argv, true);
@@ -268,6 +297,11 @@ int Main(int argc, char** argv) {
   }
   if (FLAGS_output_dir.empty()) return Usage("--output_dir is required");
   if (!(FLAGS_vis_max_depth > 0)) return Usage("--vis_max_depth must be positive");
+  {
+    bool sequence = false;
+    const Status valid = ResolveSequence(false, &sequence);
+    if (!valid.ok()) return Usage(valid.message());
+  }
   if (!FLAGS_output_bag.empty() && FLAGS_skip_existing) {
     return Usage("--output_bag and --skip_existing do not go together: the kept frames would be "
                  "missing from the new bag");

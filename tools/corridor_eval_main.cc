@@ -28,9 +28,6 @@ DEFINE_string(dataset, "", "Dataset root (<scene>/rgb, <scene>/depth, truth.yaml
 DEFINE_string(output_dir, "", "Where report.md/json/csv, index.html, plots/, vis/, depth/ go");
 DEFINE_string(caps, "5,40", "Depth caps in metres, comma-separated (the paper: 5 and 40)");
 DEFINE_int32(threads, 0, "Worker threads (0 = one per core)");
-DEFINE_bool(sequence, false,
-            "Each scene is a sequence: its frames in order, each with the previous frame's "
-            "geometry (a hidden junction's width, a held width), as corridor_depth runs them");
 DEFINE_string(compare, "",
               "Configurations to compare, solver:rasterizer,...; the first one's numbers go "
               "at the top level of report.json and into the tables (overrides --solver and "
@@ -85,10 +82,11 @@ Status ParseConfigs(const std::string& text, std::vector<Config>* configs) {
   return Status::Ok();
 }
 
-Status WriteReports(const std::vector<EvalReport>& reports, const std::string& out) {
+Status WriteReports(const std::vector<EvalReport>& reports, const std::string& out,
+                    bool sequence) {
   ReportContext context;
   context.dataset = FLAGS_dataset;
-  context.sequence = FLAGS_sequence;
+  context.sequence = sequence;
   Status status = WritePlots(reports, out, &context.plot_files);
   if (!status.ok()) return status;
   const std::vector<std::pair<std::string, std::string>> files = {
@@ -128,12 +126,17 @@ int Main(int argc, char** argv) {
   gflags::SetUsageMessage(
       "corridor_eval --dataset=DIR --output_dir=OUT [--solver=NAME] [--rasterizer=NAME] "
       "[--caps=5,40] [--threads=N] [--sequence] [--compare=solverA:rastA,solverB:rastB]");
+  RewriteBareSequenceFlag(argc, argv);
   const Status flags = CheckFlagNames(argc, argv);
   if (!flags.ok()) return Usage(flags.message());
   gflags::ParseCommandLineFlags(&argc, &argv, true);
   google::InitGoogleLogging(argv[0]);
   if (argc > 1) return Usage(std::string("unexpected argument '") + argv[1] + "'");
   if (FLAGS_dataset.empty()) return Usage("--dataset is required (a dataset root)");
+  // A dataset holds images: --sequence=auto runs each frame on its own.
+  bool sequence = false;
+  const Status sequence_status = ResolveSequence(false, &sequence);
+  if (!sequence_status.ok()) return Usage(sequence_status.message());
   if (FLAGS_output_dir.empty()) return Usage("--output_dir is required");
   if (!(FLAGS_vis_max_depth > 0)) return Usage("--vis_max_depth must be positive");
   if (!(FLAGS_vis_max_error > 0)) return Usage("--vis_max_error must be positive");
@@ -142,7 +145,7 @@ int Main(int argc, char** argv) {
   if (!status.ok()) return Usage(status.message());
   EvalRunOptions run_options;
   status = ResolveThreadCount(FLAGS_threads, &run_options.threads);
-  run_options.sequence = FLAGS_sequence;
+  run_options.sequence = sequence;
   if (!status.ok()) return Usage(status.message());
   std::vector<Config> configs;
   status = ParseConfigs(FLAGS_compare, &configs);
@@ -186,7 +189,7 @@ int Main(int argc, char** argv) {
     reports.push_back(
         BuildReport(records, frame_options.caps, configs[c].solver, configs[c].rasterizer));
   }
-  status = WriteReports(reports, FLAGS_output_dir);
+  status = WriteReports(reports, FLAGS_output_dir, sequence);
   if (!status.ok()) return Usage("cannot write the report: " + status.ToString());
 
   int failed = 0, evaluated = 0;

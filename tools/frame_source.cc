@@ -23,7 +23,9 @@ class ImageFileSource : public FrameSource {
     const DatasetFrame& input = scene_.frames[next_++];
     frame->name = input.name;
     frame->stamp_ns = -1;
-    frame->read_status = ReadColorImage(input.rgb_path, &frame->image);
+    frame->read_status = ReadColorImage(input.rgb_path, &frame->image,
+                                        scene_.per_image_hfov_deg > 0 ? ImageOrientation::kUpright
+                                                                      : ImageOrientation::kAsStored);
     return true;
   }
 

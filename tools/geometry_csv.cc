@@ -5,98 +5,133 @@
 #include <fstream>
 
 namespace corridor {
+
+const char kGeometryCsvHeader[] =
+    "frame,status,note,confidence,yaw_rad,pitch_rad,offset_m,width_m,ceiling_height_m,"
+    "end_distance_m,fx_px,fy_px,cx_px,cy_px,time_s,stamp";
+
 namespace {
 
-constexpr char kHeader[] = "frame,status,yaw,pitch,offset,width,ceiling_height,end_distance,seconds,stamp";
+// The header geometry.csv had before units and the status/note split; its rows are migrated.
+constexpr char kPreviousHeader[] =
+    "frame,status,yaw,pitch,offset,width,ceiling_height,end_distance,seconds,stamp";
 
-// The first field of a CSV row, unquoted as CsvField quotes it; false when it is malformed.
-bool FirstField(const std::string& row, std::string* field) {
-  field->clear();
-  if (row.empty() || row[0] != '"') {
-    *field = row.substr(0, row.find(','));
-    return !field->empty();
-  }
-  for (size_t i = 1; i < row.size(); ++i) {
-    if (row[i] != '"') {
-      *field += row[i];
-    } else if (i + 1 < row.size() && row[i + 1] == '"') {
-      *field += '"';
-      ++i;
-    } else {
-      return !field->empty() && (i + 1 == row.size() || row[i + 1] == ',');
+std::string Number(double value, const char* format) {
+  char text[64];
+  std::snprintf(text, sizeof(text), format, value);
+  return text;
+}
+
+std::string JoinRow(const std::vector<std::string>& fields) {
+  std::string row;
+  for (size_t i = 0; i < fields.size(); ++i) row += (i ? "," : "") + CsvField(fields[i]);
+  return row;
+}
+
+// A previous-header status ("ok", "ok: <how>", "<code words>: <message>") as status and note.
+std::pair<std::string, std::string> MigrateStatus(const std::string& old) {
+  if (old == "ok") return {"ok", ""};
+  if (old.rfind("ok: ", 0) == 0) return {"ok", old.substr(4)};
+  for (const StatusCode code :
+       {StatusCode::kInvalidArgument, StatusCode::kNotFound, StatusCode::kIoError,
+        StatusCode::kNoCorridorFound, StatusCode::kImplausibleGeometry, StatusCode::kInternal}) {
+    const std::string words = std::string(StatusCodeToString(code)) + ": ";
+    if (old.rfind(words, 0) == 0) {
+      return {StatusClass(code), std::string(StatusCodeName(code)) + ": " + old.substr(words.size())};
     }
   }
-  return false;  // No closing quote.
+  return {"failed", old};
 }
 
 }  // namespace
 
-std::string CsvField(const std::string& text) {
-  if (text.find_first_of(",\"\n") == std::string::npos) return text;
-  std::string quoted = "\"";
-  for (char c : text) {
-    if (c == '"') quoted += '"';
-    quoted += c == '\n' ? ' ' : c;
-  }
-  return quoted + "\"";
+std::pair<std::string, std::string> StatusColumns(const Status& status) {
+  if (status.ok()) return {"ok", ""};
+  return {StatusClass(status.code()),
+          std::string(StatusCodeName(status.code())) + ": " + status.message()};
 }
 
 void GeometryCsv::Add(const std::string& frame, const RecoverDepthResult& result,
                       const std::string& stamp) {
   if (!result.has_geometry) {
     AddFailure(frame, result.status, stamp);
+    if (result.camera.fx > 0) {  // The intrinsics of a frame that was read.
+      std::vector<std::string> fields;
+      SplitCsvRow(rows_.back(), &fields);
+      fields[3] = Number(result.confidence, "%.3f");
+      fields[10] = Number(result.camera.fx, "%.3f");
+      fields[11] = Number(result.camera.fy, "%.3f");
+      fields[12] = Number(result.camera.cx, "%.3f");
+      fields[13] = Number(result.camera.cy, "%.3f");
+      fields[14] = Number(result.times.total, "%.6f");
+      rows_.back() = JoinRow(fields);
+    }
     return;
   }
   const CorridorGeometry& g = result.geometry;
-  char numbers[256];
-  std::snprintf(numbers, sizeof(numbers), "%.6f,%.6f,%.4f,%.4f,%s,%s,%.6f", g.yaw, g.pitch,
-                g.offset, g.width, g.HasCeiling() ? std::to_string(g.ceiling_height).c_str() : "",
-                g.HasEndWall() ? std::to_string(g.end_distance).c_str() : "", result.times.total);
-  rows_.push_back(CsvField(frame) + "," +
-                  CsvField(!result.status.ok()        ? result.status.ToString()
-                           : result.fallback.empty() ? std::string("ok")
-                                                     : "ok: " + result.fallback) +
-                  "," + numbers +
-                  "," + CsvField(stamp));
+  auto [status, note] = StatusColumns(result.status);
+  if (result.status.ok()) note = result.fallback;
+  rows_.push_back(JoinRow({frame, status, note, Number(result.confidence, "%.3f"),
+                           Number(g.yaw, "%.6f"), Number(g.pitch, "%.6f"),
+                           Number(g.offset, "%.4f"), Number(g.width, "%.4f"),
+                           g.HasCeiling() ? Number(g.ceiling_height, "%.4f") : "",
+                           g.HasEndWall() ? Number(g.end_distance, "%.4f") : "",
+                           Number(result.camera.fx, "%.3f"), Number(result.camera.fy, "%.3f"),
+                           Number(result.camera.cx, "%.3f"), Number(result.camera.cy, "%.3f"),
+                           Number(result.times.total, "%.6f"), stamp}));
 }
 
 void GeometryCsv::AddFailure(const std::string& frame, const Status& status,
-                            const std::string& stamp) {
-  rows_.push_back(CsvField(frame) + "," + CsvField(status.ToString()) + ",,,,,,," + "," +
-                  CsvField(stamp));
+                             const std::string& stamp) {
+  const auto [code, note] = StatusColumns(status);
+  rows_.push_back(JoinRow({frame, code, note, "", "", "", "", "", "", "", "", "", "", "", "",
+                           stamp}));
 }
 
 std::string GeometryCsv::Text() const {
-  std::string text = std::string(kHeader) + "\n";
+  std::string text = std::string(kGeometryCsvHeader) + "\n";
   for (const auto& row : rows_) text += row + "\n";
   return text;
 }
 
-Status ReadGeometryCsvRows(const std::string& path, std::map<std::string, std::string>* rows) {
+Status ReadGeometryCsvRows(const std::string& path, std::map<std::string, std::string>* rows,
+                           std::vector<std::string>* order) {
   rows->clear();
+  if (order != nullptr) order->clear();
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) return Status::NotFound(path + ": no such file");
   std::ifstream in(path, std::ios::binary);
   if (!in) return Status::IoError(path + ": cannot open for reading");
   std::string line;
   int number = 0;
+  bool previous = false;
   while (std::getline(in, line)) {
     ++number;
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (number == 1) {
-      if (line != kHeader) {
+      previous = line == kPreviousHeader;
+      if (line != kGeometryCsvHeader && !previous) {
         return Status::InvalidArgument(path + ": line 1 is not the geometry.csv header '" +
-                                       std::string(kHeader) + "'");
+                                       std::string(kGeometryCsvHeader) +
+                                       "' (nor its previous one); the file is left as it is");
       }
       continue;
     }
     if (line.empty()) continue;
-    std::string frame;
-    if (!FirstField(line, &frame)) {
+    std::vector<std::string> fields;
+    const size_t expected = previous ? 10 : 16;
+    if (!SplitCsvRow(line, &fields) || fields.size() != expected || fields[0].empty()) {
       return Status::InvalidArgument(path + ": line " + std::to_string(number) +
-                                     " has no frame name");
+                                     " is not a geometry.csv row of " + std::to_string(expected) +
+                                     " fields with a frame name; the file is left as it is");
     }
-    (*rows)[frame] = line;
+    if (previous) {  // frame,status,yaw,pitch,offset,width,ceiling_height,end_distance,seconds,stamp
+      const auto [status, note] = MigrateStatus(fields[1]);
+      line = JoinRow({fields[0], status, note, "", fields[2], fields[3], fields[4], fields[5],
+                      fields[6], fields[7], "", "", "", "", fields[8], fields[9]});
+    }
+    if (order != nullptr && rows->count(fields[0]) == 0) order->push_back(fields[0]);
+    (*rows)[fields[0]] = line;
   }
   if (in.bad()) return Status::IoError(path + ": read failed");
   return Status::Ok();

@@ -4,13 +4,25 @@
 #include <string>
 #include <vector>
 
+#include "io/csv_row.h"
 #include "pipeline/recover_depth.h"
 
 namespace corridor {
 
-// geometry.csv: a header row, then `frame,status,yaw,pitch,offset,width,ceiling_height,
-// end_distance,seconds,stamp` per frame; radians and metres with the signs of geometry.md; status
-// "ok", "ok: <how>" when one junction and a known width gave the geometry, or the error; stamp "<sec>.<nsec>" for a ROS bag message; an unknown value is empty.
+// geometry.csv, one row per frame under the header kGeometryCsvHeader:
+//   frame        the frame's name;
+//   status       ok, refused (no corridor, implausible geometry, low confidence) or failed (a bad
+//                input or a read error): core/status.h's StatusClass;
+//   note         how an ok geometry came about (a held width, one junction, ...), or why the frame
+//                was refused or failed, prefixed by its code ("no_corridor_found: ...");
+//   confidence   the frame's confidence in [0, 1] (RecoverDepthResult::confidence);
+//   yaw_rad, pitch_rad, offset_m, width_m, ceiling_height_m, end_distance_m: the geometry, with
+//                the signs of docs/geometry.md;
+//   fx_px, fy_px, cx_px, cy_px: the intrinsics the frame was recovered with;
+//   time_s       the frame's computing time; stamp "<sec>.<nsec>" for a ROS bag message.
+// An unknown value is empty.
+extern const char kGeometryCsvHeader[];
+
 class GeometryCsv {
  public:
   void Add(const std::string& frame, const RecoverDepthResult& result,
@@ -26,12 +38,15 @@ class GeometryCsv {
   std::vector<std::string> rows_;
 };
 
-// Quotes a CSV field when it holds a comma, quote or newline.
-std::string CsvField(const std::string& text);
+// The status column and note of a frame's status: ("ok", "") or ("refused", "<code>: <message>").
+std::pair<std::string, std::string> StatusColumns(const Status& status);
 
-// The rows of an existing geometry.csv by frame name (the first field, unquoted), without their
-// newlines, for resuming a run. NotFound when the file does not exist; InvalidArgument naming the
-// file and line when a row has no frame name or the header is not geometry.csv's.
-Status ReadGeometryCsvRows(const std::string& path, std::map<std::string, std::string>* rows);
+// The rows of an existing geometry.csv by frame name (the first field), without their newlines,
+// in the current header's columns: a file with the previous header (frame,status,yaw,pitch,...)
+// is migrated row by row. NotFound when the file does not exist; InvalidArgument naming the file
+// and line when a row is malformed or the header is not geometry.csv's. `order` (may be null)
+// receives the frame names in file order.
+Status ReadGeometryCsvRows(const std::string& path, std::map<std::string, std::string>* rows,
+                           std::vector<std::string>* order = nullptr);
 
 }  // namespace corridor

@@ -49,6 +49,9 @@ Status CameraFromFlags(const CameraOverrides& o, InputScene* scene) {
   if (scene->kind == InputKind::kImages && scene->frames.empty()) {
     return Status::InvalidArgument("no image to size the camera by");
   }
+  // --hfov alone on images: each image is read upright and gets a camera of its own size.
+  const bool per_image = o.fx <= 0 && o.focal != "auto" && scene->kind == InputKind::kImages;
+  if (per_image) scene->per_image_hfov_deg = o.hfov_deg;
   cv::Mat first;
   const Status status = ReadFirstFrame(*scene, &first);
   if (!status.ok()) return status;
@@ -282,8 +285,16 @@ Status ResolveInput(const std::string& input, const CameraOverrides& overrides,
   return Status::Ok();
 }
 
+Camera FrameCamera(const InputScene& scene, const cv::Size& image_size) {
+  if (!(scene.per_image_hfov_deg > 0)) return scene.camera;
+  return Camera::FromHorizontalFov(image_size.width, image_size.height,
+                                   scene.per_image_hfov_deg * M_PI / 180.0,
+                                   scene.camera.mount_height);
+}
+
 Status CheckFirstFrameSize(const InputScene& scene) {
   if (scene.kind == InputKind::kImages && scene.frames.empty()) return Status::Ok();
+  if (scene.per_image_hfov_deg > 0) return Status::Ok();  // Each image has a camera of its size.
   const bool stream = scene.kind != InputKind::kImages;
   const std::string path = stream ? scene.stream_path : scene.frames.front().rgb_path;
   cv::Mat image;

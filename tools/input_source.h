@@ -3,6 +3,8 @@
 #include <string>
 #include <vector>
 
+#include <opencv2/core.hpp>
+
 #include "core/camera.h"
 #include "core/status.h"
 #include "io/dataset.h"
@@ -47,7 +49,16 @@ struct InputScene {
   std::string frame_id;              // kRosBag: the CameraInfo's frame_id ("" otherwise).
   int64_t frame_count = 0;           // Frames (a video's is its container's estimate).
   double frame_period = 0.1;         // Seconds between frames without a stamp (a video's 1/fps).
+  // Images with a camera from --hfov alone: each image gets a pinhole of its own size with this
+  // field of view (degrees) and is read upright (EXIF orientation), as a photo viewer shows it;
+  // `camera` is then the first image's. 0 = the scene's camera serves every frame, and images are
+  // read as stored (a calibration is for the image as stored).
+  double per_image_hfov_deg = 0;
 };
+
+// The camera of one frame of the scene: the scene's, or, with per_image_hfov_deg, a pinhole of
+// the image's own size.
+Camera FrameCamera(const InputScene& scene, const cv::Size& image_size);
 
 // The field of view --focal=auto falls back to without --hfov, degrees.
 constexpr double kDefaultFallbackHfovDeg = 60.0;

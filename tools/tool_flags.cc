@@ -69,6 +69,13 @@ DEFINE_int32(relaxed_hough_threshold, 12,
              "Junction search: when no pair of junctions is found, look at the same edges again "
              "with this Hough threshold (votes) and shorter segments, for a faint junction broken "
              "into short pieces (door bottoms); 0 = no second look");
+DEFINE_string(sequence, "auto",
+              "Run the frames as one stream, in order, so that tracking and the holds of widths "
+              "and ceilings apply: auto (videos and ROS bags yes; images, folders and datasets "
+              "no: each frame on its own), true or false");
+DEFINE_double(min_confidence, corridor::RecoverDepthOptions().min_confidence,
+              "Refuse a frame whose confidence (the evidence for its layout, 0-1) is below this; "
+              "0 = never refuse on confidence");
 DEFINE_double(max_floor_texture, 0.015,
               "A floor between the junctions with more strong edges along no corridor line "
               "(horizontal, vertical, toward the vanishing point) than this fraction is not a "
@@ -100,6 +107,7 @@ Status RecoverDepthOptionsFromFlags(RecoverDepthOptions* options) {
   options->perception.max_floor_texture = FLAGS_max_floor_texture;
   options->perception.hough_angle_window_deg = FLAGS_hough_angle_window;
   options->perception.relaxed_hough_threshold = FLAGS_relaxed_hough_threshold;
+  options->min_confidence = FLAGS_min_confidence;
   std::unique_ptr<DepthRecoverer> probe;
   return DepthRecoverer::Create(*options, &probe);
 }
@@ -133,6 +141,31 @@ CameraOverrides CameraOverridesFromFlags() {
   overrides.hfov_deg = FLAGS_hfov;
   overrides.focal = FLAGS_focal;
   return overrides;
+}
+
+Status ResolveSequence(bool stream, bool* sequence) {
+  if (FLAGS_sequence == "auto") {
+    *sequence = stream;
+  } else if (FLAGS_sequence == "true" || FLAGS_sequence == "1") {
+    *sequence = true;
+  } else if (FLAGS_sequence == "false" || FLAGS_sequence == "0") {
+    *sequence = false;
+  } else {
+    return Status::InvalidArgument("--sequence=" + FLAGS_sequence +
+                                   ": the values are auto, true and false");
+  }
+  return Status::Ok();
+}
+
+void RewriteBareSequenceFlag(int argc, char** argv) {
+  static char kTrue[] = "--sequence=true";
+  static char kFalse[] = "--sequence=false";
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--") break;
+    if (arg == "--sequence" || arg == "-sequence") argv[i] = kTrue;
+    if (arg == "--nosequence" || arg == "-nosequence") argv[i] = kFalse;
+  }
 }
 
 }  // namespace corridor

@@ -34,12 +34,23 @@ DECLARE_double(roi_top);
 DECLARE_double(max_floor_texture);
 DECLARE_double(hough_angle_window);
 DECLARE_int32(relaxed_hough_threshold);
+DECLARE_string(sequence);
+DECLARE_double(min_confidence);
 
 namespace corridor {
 
 // RecoverDepthOptions from the flags, checked; InvalidArgument names the bad flag.
 Status RecoverDepthOptionsFromFlags(RecoverDepthOptions* options);
 CameraOverrides CameraOverridesFromFlags();
+
+// --sequence=auto|true|false for a scene: `stream` is true for a video or a ROS bag, which auto
+// runs as one sequence (tracking, held widths and ceilings); images, folders and datasets are
+// independent frames. InvalidArgument for another value.
+Status ResolveSequence(bool stream, bool* sequence);
+
+// Call first: a bare --sequence (or --nosequence), as the flag was once a boolean, becomes
+// --sequence=true (false), since gflags would take the next argument as a string flag's value.
+void RewriteBareSequenceFlag(int argc, char** argv);
 
 // Call before gflags::ParseCommandLineFlags: an unknown flag is bad usage (the tools exit 2), but
 // gflags itself would exit 1 on it. InvalidArgument naming the first unknown flag; "--" ends the

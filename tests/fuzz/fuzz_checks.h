@@ -36,7 +36,10 @@ inline std::string CheckResult(const Camera& camera, const RecoverDepthOptions& 
   for (int r = 0; r < result.depth.rows; ++r) {
     const float* row = result.depth.ptr<float>(r);
     for (int c = 0; c < result.depth.cols; ++c) {
-      if (!(std::isfinite(row[c]) && row[c] >= 0)) return "depth negative or not finite";
+      // NaN = no estimate; every estimate is a positive, finite depth.
+      if (!std::isnan(row[c]) && !(std::isfinite(row[c]) && row[c] > 0)) {
+        return "depth not positive, finite or NaN";
+      }
     }
   }
   return "";

@@ -135,7 +135,8 @@ TEST(ReportCsv, OneRowPerFrameWithEveryMetric) {
   EXPECT_DOUBLE_EQ(std::stod(rows[2][column("true_width")]), 2.1);
   EXPECT_DOUBLE_EQ(std::stod(rows[3][column("lt2_coverage")]), 0.5);
   EXPECT_DOUBLE_EQ(std::stod(rows[3][column("t_total_s")]), 0.02);
-  EXPECT_EQ(rows[4][column("status")], "failed");
+  // No corridor found: the frame was read but refused (StatusClass).
+  EXPECT_EQ(rows[4][column("status")], "refused");
   EXPECT_NE(rows[4][column("reason")].find("no lines, \"really\""), std::string::npos);
   EXPECT_EQ(rows[4][column("lt2_abs_rel")], "");  // NaN -> empty.
   EXPECT_EQ(rows[4][column("est_width")], "");

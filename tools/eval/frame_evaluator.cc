@@ -101,6 +101,8 @@ Status EvaluateFrame(const InputScene& scene, size_t index, const DepthRecoverer
     if (prior != nullptr) prior->Update(result);
     record->times = result.times;
     record->junctions_tracked = result.junctions_tracked;
+    record->confidence = result.confidence;
+    record->evidence = result.evidence;
   }
   record->status = status;
   record->has_estimate = status.ok() && result.has_geometry;

@@ -32,6 +32,8 @@ struct FrameRecord {
   bool ceiling_visible = false;       // The true ceiling/wall junctions are in view (ceiling_visibility.h).
   bool ceiling_estimated = false;     // The ceiling search found the ceiling (or a sequence held it): estimate.ceiling_height is its height.
   bool junctions_tracked = false;     // A sequence found the junctions near the previous frame's (RecoverDepthResult::junctions_tracked).
+  double confidence = 0;              // RecoverDepthResult::confidence.
+  FrameEvidence evidence;             // What the confidence rests on.
   bool has_depth_truth = false;       // True when the dataset has a ground-truth depth image.
   std::vector<DepthMetrics> metrics;  // One per cap; a failed frame with gt has coverage 0.
   std::vector<DepthBin> depth_bins;   // AbsRel by true depth, 1 m bins up to the largest cap.

@@ -63,7 +63,7 @@ cv::Mat ColorizeError(const cv::Mat& error, const cv::Mat& gt, const cv::Mat& pr
   cv::Mat color;
   cv::applyColorMap(scaled, color, cv::COLORMAP_INFERNO);
   color.setTo(cv::Scalar(0, 0, 0), gt <= 0);
-  color.setTo(kMissingColor, (gt > 0) & (pred <= 0));
+  color.setTo(kMissingColor, (gt > 0) & ~(pred > 0));
   return color;
 }
 

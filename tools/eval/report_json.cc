@@ -118,7 +118,7 @@ std::string Group(const GroupSummary& g, const std::vector<double>& caps, bool i
 std::string Frame(const FrameRecord& f, const std::vector<double>& caps) {
   JsonObject o;
   o.String("scene", f.scene).String("frame", f.frame);
-  o.String("status", f.status.ok() ? "ok" : "failed").String("reason", f.status.ToString());
+  o.String("status", StatusClass(f.status.code())).String("reason", f.status.ToString());
   o.Add("estimate", f.has_estimate ? Geometry(f.estimate) : "null");
   o.Add("truth", f.has_truth ? Geometry(f.truth) : "null");
   o.Number("width_rel_error", f.has_estimate && f.has_truth

@@ -96,7 +96,11 @@ std::string ReportCsv(const std::vector<EvalReport>& configs) {
                                      "reason",     "est_yaw",        "est_pitch",  "est_offset",
                                      "est_width",  "true_yaw",       "true_pitch", "true_offset",
                                      "true_width", "width_rel_error", "est_ceiling_height",
-                                     "true_ceiling_height", "ceiling_visible", "junctions_tracked"};
+                                     "true_ceiling_height", "ceiling_visible", "junctions_tracked",
+                                     "confidence", "left_junction", "right_junction",
+                                     "left_support", "right_support", "left_crossing",
+                                     "left_reaching", "right_crossing", "right_reaching",
+                                     "ceiling_disagreement", "moved_side"};
   const std::vector<double> caps = configs.empty() ? std::vector<double>() : configs[0].caps;
   for (double cap : caps) {
     for (const char* name : kMetricNames) header.push_back(CapKey(cap) + "_" + name);
@@ -110,7 +114,7 @@ std::string ReportCsv(const std::vector<EvalReport>& configs) {
   for (const EvalReport& r : configs) {
     for (const FrameRecord& f : r.frames) {
       std::vector<std::string> row = {r.ConfigName(), f.scene, f.frame,
-                                      f.status.ok() ? "ok" : "failed",
+                                      StatusClass(f.status.code()),
                                       f.status.ok() ? "" : f.status.ToString()};
       AddGeometry(f.has_estimate, f.estimate, &row);
       AddGeometry(f.has_truth, f.truth, &row);
@@ -121,6 +125,17 @@ std::string ReportCsv(const std::vector<EvalReport>& configs) {
       row.push_back(f.has_truth && f.truth.HasCeiling() ? CsvNumber(f.truth.ceiling_height) : "");
       row.push_back(f.has_truth ? (f.ceiling_visible ? "1" : "0") : "");
       row.push_back(f.junctions_tracked ? "1" : "0");
+      const FrameEvidence& e = f.evidence;
+      for (double v : {f.confidence, e.junction[0], e.junction[1], e.line_support[0],
+                       e.line_support[1]}) {
+        row.push_back(f.ran ? CsvNumber(v) : "");
+      }
+      for (int v : {e.crossings[0].crossing, e.crossings[0].reaching, e.crossings[1].crossing,
+                    e.crossings[1].reaching}) {
+        row.push_back(f.ran ? std::to_string(v) : "");
+      }
+      row.push_back(f.ran ? CsvNumber(e.ceiling_disagreement) : "");
+      row.push_back(f.ran ? std::to_string(e.moved_side) : "");
       for (size_t c = 0; c < caps.size(); ++c) {
         const DepthMetrics m = c < f.metrics.size() ? f.metrics[c] : DepthMetrics();
         const bool known = c < f.metrics.size();

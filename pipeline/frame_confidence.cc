@@ -1,0 +1,67 @@
+#include "pipeline/frame_confidence.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace corridor {
+namespace {
+
+double Ramp(double x, double x0, double x1) { return std::clamp((x - x0) / (x1 - x0), 0.0, 1.0); }
+
+std::string Format(const char* format, double value) {
+  char text[200];
+  std::snprintf(text, sizeof(text), format, value);
+  return text;
+}
+
+}  // namespace
+
+double FrameConfidence(const FrameEvidence& e, std::string* why) {
+  double confidence = 1.0;
+  double weakest = 1.0;
+  std::string reason = "the evidence is good";
+  const auto factor = [&](double f, const std::string& because) {
+    confidence *= f;
+    if (f < weakest) weakest = f, reason = because;
+  };
+  const char* const side_name[2] = {"left", "right"};
+  for (int s = 0; s < 2; ++s) {
+    // A junction line with hardly any boundary evidence or support is a weak base.
+    if (e.junction[s] >= 0) {
+      factor(0.6 + 0.4 * Ramp(e.junction[s], 0.03, 0.15),
+             std::string("the ") + side_name[s] + " junction line has little edge support (" +
+                 Format("%.2f", e.junction[s]) + ")");
+    }
+    // Vertical edges that go on below a junction: the wall goes on below it. With few edges the
+    // fraction is uncertain: it is taken as crossing / (reaching + 1).
+    const VerticalCrossings& c = e.crossings[s];
+    if (c.reaching >= 3) {
+      const double fraction = static_cast<double>(c.crossing) / (c.reaching + 1);
+      factor(1.0 - 0.8 * Ramp(fraction, 0.35, 0.75),
+             std::string("vertical edges cross the ") + side_name[s] + " junction (" +
+                 std::to_string(c.crossing) + " of " + std::to_string(c.reaching) +
+                 "): the wall goes on below it (a rail, sill or bench edge taken for the floor's "
+                 "edge?)");
+    }
+  }
+  // A wall moved out by the ceiling's evidence stands on that evidence alone: its junction is
+  // often hidden (by the boxes whose edge was taken for it), so the image cannot confirm it.
+  if (e.moved_side >= 0) {
+    factor(0.9, std::string("the ") + side_name[e.moved_side] +
+                    " wall was moved out to where its ceiling junction agrees with the other's");
+  }
+  // Ceiling: two sides that disagree by 10% or more put one wall at a wrong distance.
+  if (e.ceiling_disagreement >= 0) {
+    factor(1.0 - 0.7 * Ramp(e.ceiling_disagreement, 0.08, 0.25),
+           Format("the two ceiling sides disagree by %.0f%%: a junction is not the floor's edge",
+                  100 * (std::exp(e.ceiling_disagreement) - 1)));
+  }
+  if (e.corrected) {
+    factor(0.9, "the geometry needed a correction (one junction, a held width or a lower line)");
+  }
+  if (why != nullptr) *why = reason;
+  return std::clamp(confidence, 0.0, 1.0);
+}
+
+}  // namespace corridor

@@ -1,0 +1,22 @@
+#pragma once
+
+#include <string>
+
+#include <opencv2/core.hpp>
+
+#include "core/camera.h"
+#include "core/corridor_geometry.h"
+#include "evaluation/junction_labels.h"
+
+namespace corridor {
+
+// One photo of a contact sheet: the photo with its labelled junction segments (green) and the
+// junctions the reported geometry projects (red; none when refused), a caption below.
+cv::Mat LabelTile(const cv::Mat& bgr, const JunctionLabel& label, bool ok,
+                  const CorridorGeometry& geometry, const Camera& camera,
+                  const std::string& caption, int tile_width);
+
+// Tiles side by side, `columns` to a row, on a white background.
+cv::Mat ContactSheet(const std::vector<cv::Mat>& tiles, int columns);
+
+}  // namespace corridor
