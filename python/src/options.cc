@@ -2,7 +2,6 @@
 
 #include <functional>
 #include <map>
-#include <type_traits>
 
 #include "python/src/common.h"
 
@@ -21,22 +20,6 @@ Setter Nested(S RecoverDepthOptions::*group, T S::*field) {
   return [group, field](RecoverDepthOptions* o, const py::handle& v) {
     (o->*group).*field = py::cast<T>(v);
   };
-}
-
-// min_confidence exists once the frame confidence does; bound whenever the options have it.
-template <typename O, typename = void>
-struct HasMinConfidence : std::false_type {};
-template <typename O>
-struct HasMinConfidence<O, std::void_t<decltype(std::declval<O&>().min_confidence)>>
-    : std::true_type {};
-
-template <typename O>
-void AddMinConfidence(std::map<std::string, Setter>* setters) {
-  if constexpr (HasMinConfidence<O>::value) {
-    (*setters)["min_confidence"] = [](O* o, const py::handle& v) {
-      o->min_confidence = py::cast<decltype(o->min_confidence)>(v);
-    };
-  }
 }
 
 const std::map<std::string, Setter>& Setters() {
@@ -63,7 +46,7 @@ const std::map<std::string, Setter>& Setters() {
     s["max_ceiling_change"] = Field(&O::max_ceiling_change);
     s["estimate_end_wall"] = Field(&O::estimate_end_wall);
     s["search_max_width"] = Field(&O::search_max_width);
-    AddMinConfidence<O>(&s);
+    s["min_confidence"] = Field(&O::min_confidence);
     // The tools' flag names for the same or nested fields.
     s["end_wall"] = Field(&O::estimate_end_wall);
     s["inner_line_check"] = Field(&O::ceiling_checks_inner_lines);

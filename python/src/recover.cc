@@ -109,7 +109,9 @@ void BindRecover(py::module_& m) {
       .def_property_readonly("ok", [](const PyResult& r) { return r.status.ok(); })
       .def_readonly("status", &PyResult::status)
       .def_readonly("depth", &PyResult::depth, "float32 HxW, metres, NaN = no estimate")
-      .def_readonly("confidence", &PyResult::confidence, "In [0, 1]")
+      .def_readonly("confidence", &PyResult::confidence,
+                    "In [0, 1]: the evidence for the layout (0 without one); frames below the "
+                    "min_confidence keyword are refused with code 'low_confidence'.")
       .def_readonly("has_geometry", &PyResult::has_geometry)
       .def_readonly("geometry", &PyResult::geometry)
       .def_readonly("junctions", &PyResult::junctions)

@@ -1,30 +1,9 @@
 #include "python/src/result.h"
 
-#include <limits>
-#include <type_traits>
-
 #include "python/src/common.h"
 
 namespace corridor {
 namespace python {
-namespace {
-
-// The frame confidence, once RecoverDepthResult has one; NaN before.
-template <typename R, typename = void>
-struct HasConfidence : std::false_type {};
-template <typename R>
-struct HasConfidence<R, std::void_t<decltype(std::declval<R&>().confidence)>> : std::true_type {};
-
-template <typename R>
-double ConfidenceOf(const R& result) {
-  if constexpr (HasConfidence<R>::value) {
-    return result.confidence;
-  } else {
-    return std::numeric_limits<double>::quiet_NaN();
-  }
-}
-
-}  // namespace
 
 PyResult MakeResult(RecoverDepthResult&& result, int rows, int cols) {
   if (IsCallerError(result.status)) ThrowStatus(result.status);
@@ -43,7 +22,7 @@ PyResult MakeResult(RecoverDepthResult&& result, int rows, int cols) {
   out.ceiling_held = result.ceiling_held;
   out.junctions_tracked = result.junctions_tracked;
   out.ceiling_trusted = result.ceiling_trusted;
-  out.confidence = ConfidenceOf(result);
+  out.confidence = result.confidence;
   out.times = result.times;
   out.depth = DepthToArray(std::move(result.depth), rows, cols);
   return out;

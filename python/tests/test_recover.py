@@ -174,3 +174,21 @@ def test_options_by_field_and_flag_name(single_frame):
     np.testing.assert_array_equal(by_flag.depth, by_field.depth)
     assert not by_flag.end_wall_found
     assert {"solver", "max_range", "roi_top", "hough_angle_window"} <= set(cd.option_names())
+
+
+def test_min_confidence_refuses_frames_below_it(single_frame):
+    image_path, camera_path, _ = single_frame
+    image = cd.read_image(str(image_path))
+    camera = cd.Camera.from_file(str(camera_path))
+    res = cd.recover_depth(image, camera)
+    assert res.ok and 0 < res.confidence <= 1
+    below = cd.recover_depth(image, camera, min_confidence=max(0.0, res.confidence - 0.05))
+    assert below.ok and below.confidence == res.confidence
+    if res.confidence < 1:
+        above = cd.recover_depth(image, camera, min_confidence=min(1.0, res.confidence + 0.05))
+        assert not above.ok
+        assert above.status.code == "low_confidence"
+        assert above.status.status_class == "refused"
+        assert np.isnan(above.depth).all()
+    else:  # The generated frame is as sure as can be: nothing refuses it.
+        assert cd.recover_depth(image, camera, min_confidence=1.0).ok
