@@ -99,7 +99,8 @@ def main():
     plt.close(fig)
 
     coverage = np.isfinite(res.depth).mean()
-    print(f"{photo.name}: {res.status}; depth on {100 * coverage:.0f}% of the pixels")
+    print(f"{photo.name}: {res.status}; confidence {res.confidence:.2f}; "
+          f"depth on {100 * coverage:.0f}% of the pixels")
     if res.ok:
         print(f"geometry: {res.geometry}")
     print(f"wrote {depth_png} and {figure_png}")
