@@ -179,7 +179,12 @@ Status DetectCeiling(const cv::Mat& bgr, const Camera& camera, const CorridorGeo
   }
   // Every candidate line is projected once; edges are computed only on the rows they cross.
   // Per thread, so that its half a megabyte of pixels is allocated once, not every search.
-  thread_local SearchLines lines;
+  thread_local SearchLines thread_lines;
+  // Its address opaque to the optimiser, so that a shared object does not call __tls_get_addr at
+  // each use (see OrientedHoughSegments).
+  SearchLines* lines_address = &thread_lines;
+  asm("" : "+r"(lines_address));
+  SearchLines& lines = *lines_address;
   lines.heights.clear();  // ProjectSearchLines sets the rest.
   ProjectSearchLines(camera, g, o, &lines);
   if (lines.bottom < lines.top) {
