@@ -10,7 +10,8 @@ PACKAGES=(
   librosbag-storage-dev libsensor-msgs-dev python3-rosbag python3-sensor-msgs
   libroscpp-dev libimage-transport-dev libvisualization-msgs-dev libdiagnostic-msgs-dev
   libtf2-ros-dev libtf2-msgs-dev libstd-msgs-dev libgeometry-msgs-dev python3-rosmaster
-  python3 python3-pil
+  python3 python3-pil python3-dev python3-numpy python3-pytest python3-matplotlib pybind11-dev
+  clang-format
 )
 
 missing=()

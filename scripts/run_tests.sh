@@ -1,15 +1,18 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds the whole test suite with AddressSanitizer +
-# UndefinedBehaviorSanitizer (build-asan/, -O1) and runs it with ctest: any sanitizer report fails
-# the test that caused it. This is what CI's .ci/run calls.
-# CORRIDOR_SANITIZE=0 runs the same suite on the plain Release build (build/) instead, in less
+# Installs what is missing, checks the formatting, builds the whole test suite with
+# AddressSanitizer + UndefinedBehaviorSanitizer (build-asan/, -O1) and runs it with ctest: any
+# sanitizer report fails the test that caused it. Then builds the Python module and the ROS node
+# in Release (build/; an AddressSanitizer module does not import into a plain Python) and runs
+# their tests. This is what CI's .ci/run calls.
+# CORRIDOR_SANITIZE=0 runs the whole suite on the plain Release build (build/) instead, in less
 # than half the time (docs/results.md, "Test suite").
 # Usage: bash scripts/run_tests.sh [extra ctest arguments]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install_deps.sh
 if [ "${CORRIDOR_SANITIZE:-1}" != 0 ]; then
-  exec bash scripts/run_sanitized_tests.sh "$@"
+  bash scripts/run_sanitized_tests.sh "$@"
+  exec bash scripts/run_release_tests.sh
 fi
 # Benchmarks are built by scripts/run_benchmarks.sh; the test run skips them to stay fast.
 bash scripts/build.sh -DCORRIDOR_BUILD_BENCHMARKS=OFF

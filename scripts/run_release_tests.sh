@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# The tests that need a plain Release build (build/): the Python module (an AddressSanitizer build
+# does not import into a plain Python) with its install into a temporary prefix, and the live ROS
+# node (started with its own rosmaster on a loopback port). Builds only what they need.
+# Usage: bash scripts/run_release_tests.sh
+set -euo pipefail
+cd "$(dirname "$0")/.."
+BUILD_DIR=${BUILD_DIR:-build}
+start=$(date +%s)
+cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release -DCORRIDOR_WERROR=ON \
+  -DCORRIDOR_BUILD_BENCHMARKS=OFF >/dev/null
+targets=(corridor_depth corridor_synth)
+labels=()
+if grep -q "CORRIDOR_BUILD_PYTHON:BOOL=ON" "$BUILD_DIR/CMakeCache.txt"; then
+  targets+=(corridor_depth_python corridor_python_reference)
+  labels+=(python)
+fi
+if grep -q "CORRIDOR_WITH_ROS:BOOL=ON" "$BUILD_DIR/CMakeCache.txt"; then
+  # The node and its test binaries: every target of ros/.
+  targets+=($(cmake --build "$BUILD_DIR" --target help | sed -n 's/^\.\.\. \(ros_[a-z_]*_test\|corridor_depth_node\|corridor_option_table\).*/\1/p'))
+  labels+=(ros)
+fi
+if [ ${#labels[@]} -eq 0 ]; then
+  echo "run_release_tests: neither the Python module nor the ROS node is configured" >&2
+  exit 1
+fi
+cmake --build "$BUILD_DIR" -j"$(nproc)" --target "${targets[@]}"
+built=$(date +%s)
+regex=$(IFS='|'; echo "${labels[*]}")
+(cd "$BUILD_DIR" && ctest --output-on-failure -j"$(nproc)" --timeout 600 -L "$regex")
+echo "run_release_tests: build $((built - start)) s, tests $(($(date +%s) - built)) s"
