@@ -4,10 +4,12 @@
 Usage: python3 scripts/benchmark_table.py FILE.json
 
 Reads the EndToEnd/<config>/<width>x<height> benchmarks and prints, per size, the median time per
-frame of every config (the mean when the run had no repetitions), in milliseconds, the ratios
-paper/best and best/floor (and paper/best_paper_scope, like for like, when that config ran), and
-best's width error on the timed frame (its width_error_mm counter): a fast answer is only worth
-its time if it is right. Standard library only.
+frame of every config (the mean when the run had no repetitions), in milliseconds: paper, default,
+best, both floors (floor: a colour Canny; floor_grey: the honest one, a grey Canny), then the
+others; the ratios paper/default, paper/best, default/floor_grey, best/floor_grey and best/floor
+(and paper/best_paper_scope, like for like, when that config ran), all from the same run; and
+default's and best's width errors on the timed frame (their width_error_mm counters): a fast
+answer is only worth its time if it is right. Standard library only.
 """
 
 import json
@@ -18,7 +20,11 @@ from collections import defaultdict
 
 NAME = re.compile(r"^EndToEnd/([^/]+)/(\d+)x(\d+)$")
 TO_MS = {"ns": 1e-6, "us": 1e-3, "ms": 1.0, "s": 1e3}
-MAIN_CONFIGS = ["paper", "best", "floor"]
+MAIN_CONFIGS = ["paper", "default", "best", "floor", "floor_grey"]
+# (numerator, denominator) of each ratio column.
+RATIOS = [("paper", "default"), ("paper", "best"), ("default", "floor_grey"),
+          ("best", "floor_grey"), ("best", "floor")]
+ERRORS = ["default", "best"]    # Configs whose width error is shown.
 
 
 def load_times(path):
@@ -86,17 +92,17 @@ def main(argv):
           f"at {context.get('mhz_per_cpu', '?')} MHz, {context.get('date', '')})")
     print()
     # paper against best on the same scope (no ceiling or end wall), when that was run.
-    scoped = any(k[0] == "best_paper_scope" for k in times)
-    print("| size | " + " | ".join(configs) + " | paper/best | best/floor |" +
-          (" paper/best_paper_scope |" if scoped else "") + " best's width error, mm |")
-    print("|---|" + "---:|" * (len(configs) + 3 + scoped))
+    ratios = RATIOS + ([("paper", "best_paper_scope")]
+                       if any(k[0] == "best_paper_scope" for k in times) else [])
+    print("| size | " + " | ".join(configs) + " | " +
+          " | ".join(f"{a}/{b}" for a, b in ratios) + " | " +
+          " | ".join(f"{c}'s width error, mm" for c in ERRORS) + " |")
+    print("|---|" + "---:|" * (len(configs) + len(ratios) + len(ERRORS)))
     for size in sizes:
-        row = [times.get((c, size)) for c in configs]
-        paper, best, floor = (times.get((c, size)) for c in MAIN_CONFIGS)
-        same_scope = f" {ratio(paper, times.get(('best_paper_scope', size)))} |" if scoped else ""
-        print(f"| {size[0]}x{size[1]} | " + " | ".join(fmt(t) for t in row) +
-              f" | {ratio(paper, best)} | {ratio(best, floor)} |{same_scope}"
-              f" {fmt_mm(width_errors.get(('best', size)))} |")
+        row = [fmt(times.get((c, size))) for c in configs]
+        row += [ratio(times.get((a, size)), times.get((b, size))) for a, b in ratios]
+        row += [fmt_mm(width_errors.get((c, size))) for c in ERRORS]
+        print(f"| {size[0]}x{size[1]} | " + " | ".join(row) + " |")
     return 0
 
 
