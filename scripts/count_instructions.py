@@ -2,8 +2,8 @@
 """Instructions per frame of corridor_benchmarks' EndToEnd benchmarks, under callgrind.
 
 Usage: python3 scripts/count_instructions.py [REGEX] [--min_time=SECONDS]
-  REGEX       which benchmarks (Google Benchmark filter), default
-              'EndToEnd/(paper|default|best|best_paper_scope|best_tracked|floor|floor_grey)/640x480$'
+  REGEX       which benchmarks (Google Benchmark filter), default: paper, default, best,
+              best_paper_scope, best_tracked and both floors at 640x480 (DEFAULT_FILTER)
   --min_time  per benchmark, in valgrind's slowed time; default 0.0001 (one timed frame) for a
               single frame, 2 for the drives (best_sequence, best_tracked: a few dozen frames)
 
