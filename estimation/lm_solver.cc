@@ -5,6 +5,7 @@
 #include <ceres/ceres.h>
 
 #include "estimation/alternation.h"
+#include "estimation/closed_form.h"
 #include "estimation/ceres_options.h"
 
 namespace corridor {
@@ -62,8 +63,26 @@ Status LmSolver::Solve(const CorridorObservation& observation, const CorridorGeo
   const auto start = std::chrono::steady_clock::now();
   *summary = SolverSummary();
   summary->solver_name = Name();
-  const Status status =
-      RunAlternation(observation, initial, options_, LmStageMinimizer(options_.lm), summary);
+  // Without an initial estimate, the closed form's (when it has one): the alternation from zero
+  // yaw and offset and a guessed width can stop in another minimum. The closed form is not
+  // robust: where gross outliers put its estimate where the stages find no floor, the
+  // alternation's own start.
+  CorridorGeometry closed_form;
+  Status status;
+  bool solved = false;
+  if (initial == nullptr && options_.lm.start_from_closed_form &&
+      SolveClosedForm(observation, &closed_form).ok()) {
+    status = RunAlternation(observation, &closed_form, options_, LmStageMinimizer(options_.lm),
+                            summary);
+    solved = status.ok();
+  }
+  if (!solved) {
+    const int evaluations = summary->evaluations;
+    *summary = SolverSummary();
+    summary->solver_name = Name();
+    status = RunAlternation(observation, initial, options_, LmStageMinimizer(options_.lm), summary);
+    summary->evaluations += evaluations;
+  }
   summary->seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return status;

@@ -6,6 +6,7 @@ namespace corridor {
 
 // Ceres Levenberg-Marquardt on the same SymmetryResidual and WidthResidual functors (autodiff),
 // inside the paper's stage alternation, with an optional robust loss and bounds on the angles.
+// Without an initial estimate it starts from the closed form's (LmOptions::start_from_closed_form).
 class LmSolver : public CorridorSolver {
  public:
   explicit LmSolver(const SolverOptions& options) : options_(options) {}

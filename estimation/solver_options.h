@@ -51,6 +51,7 @@ struct LmOptions {
   double parameter_tolerance = 1e-10;// Ceres relative step tolerance.
   double gradient_tolerance = 1e-12; // Ceres gradient tolerance.
   double initial_width = 2.0;        // Width used when no initial estimate is given, m.
+  bool start_from_closed_form = true; // "lm" without an initial estimate starts from the closed form's (geometry.md section 4), not from zero yaw/offset and initial_width; "joint" always does.
 
   bool Check(std::string* why) const;
 };

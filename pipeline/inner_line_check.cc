@@ -1,8 +1,61 @@
 #include "pipeline/inner_line_check.h"
 
+#include <algorithm>
 #include <cmath>
+#include <iomanip>
+#include <sstream>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "core/corridor_frame.h"
+#include "perception/appearance.h"
+#include "perception/corridor_projection.h"
+#include "perception/line_segments.h"
 
 namespace corridor {
+namespace {
+
+// The image line of the floor line (x, h, z) over the depths where it is in view, as the junction
+// search's lines are held (MergedLine); false when fewer than two of its samples are in view.
+bool FloorLineInImage(const Camera& camera, const CorridorGeometry& g, double x, MergedLine* m) {
+  const CorridorRotation<double> r(g.pitch, g.yaw);
+  const bool distorted = camera.HasDistortion();
+  std::vector<Eigen::Vector2d> points;
+  // From 1 m to 12 m, evenly in inverse distance: the near part, where a baseboard is tallest.
+  constexpr int kSamples = 32;
+  for (int i = 0; i < kSamples; ++i) {
+    const double inverse = 1.0 + (1.0 / 12.0 - 1.0) * i / (kSamples - 1);
+    cv::Point p;
+    if (ProjectCorridorPoint(camera, distorted, r, x, g.camera_height, 1.0 / inverse, 2, &p)) {
+      points.emplace_back(p.x, p.y);
+    }
+  }
+  if (points.size() < 2) return false;
+  Eigen::Vector3d line = points.front().homogeneous().cross(points.back().homogeneous());
+  const double norm = line.head<2>().norm();
+  if (!(norm > 1e-9)) return false;
+  line /= norm;
+  if (line.y() < 0) line = -line;
+  m->line = line;
+  SetExtentAlongLine(points, m);
+  return true;
+}
+
+// How unlike the floor below it the band between the floor lines at wall distances `upper` and
+// `lower` (< upper) on `side` (0 left, 1 right) looks (BandContrast); -1 when not measurable.
+double WallBand(const cv::Mat& bgr, const Camera& camera, const CorridorGeometry& g, int side,
+                double upper, double lower, const FloorAppearance& floor) {
+  const double sign = side == 0 ? -1.0 : 1.0;
+  MergedLine up, down;
+  if (!FloorLineInImage(camera, g, sign * upper, &up) ||
+      !FloorLineInImage(camera, g, sign * lower, &down)) {
+    return -1;
+  }
+  return BandContrast(bgr, floor, up, down, 0);
+}
+
+}  // namespace
 
 bool InnerLineCheckOptions::Check(std::string* why) const {
   std::string reason;
@@ -16,9 +69,35 @@ bool InnerLineCheckOptions::Check(std::string* why) const {
   } else if (!(max_line_support > 0 && max_line_support <= 1)) {
     reason = "max_line_support must be in (0, 1]";
   }
+  if (!(min_band_contrast >= 0 && std::isfinite(min_band_contrast))) {
+    reason = "min_band_contrast must be non-negative";
+  } else if (!(min_baseboard_disagreement > 0 && std::isfinite(min_baseboard_disagreement))) {
+    reason = "min_baseboard_disagreement must be positive";
+  }
   if (reason.empty()) return true;
   if (why != nullptr) *why = reason;
   return false;
+}
+
+double MinInnerLineDisagreement(const InnerLineCheckOptions& options) {
+  return options.min_band_contrast > 0
+             ? std::min(options.min_disagreement, options.min_baseboard_disagreement)
+             : options.min_disagreement;
+}
+
+std::string DescribeInnerLineCheck(const InnerLineCheck& check) {
+  if (!check.moved) return "";
+  std::ostringstream how;
+  const int other = 1 - check.side;
+  how << (check.side == 0 ? "left" : "right") << " wall moved "
+      << (check.baseboard ? "in " : "out ") << std::setprecision(3) << check.factor
+      << "x: its junction is "
+      << (check.baseboard ? "a line on the wall, as a baseboard's top is"
+                          : "a line inside the floor")
+      << " (its ceiling junction gave "
+      << check.side_height[check.side] << " m, the other side's " << check.side_height[other]
+      << " m)";
+  return how.str();
 }
 
 InnerLineCheck CheckInnerLine(const cv::Mat& bgr, const Camera& camera,
@@ -51,6 +130,47 @@ InnerLineCheck CheckInnerLine(const cv::Mat& bgr, const Camera& camera,
                            !has_lower[1 - inner];
   if (!both && !narrow_view) return check;
   const double factor = above[1 - inner] / above[inner];
+  double distance[2] = {geometry->LeftDistance(), geometry->RightDistance()};
+  // A baseboard's top taken on the far side: its junction is the floor's boundary (BoundaryScore)
+  // best placed a little further in, about the ceiling sides' ratio; the bands the two moves would
+  // cross, from the far wall's line in to that junction and from the near wall's line out by the
+  // same ratio, are both baseboard (unlike the floor below them), where moving the near wall out
+  // would cross floor.
+  if (options.min_band_contrast > 0 && factor > 1 + options.min_baseboard_disagreement &&
+      sides.side_height[inner] >= ceiling.min_height &&
+      sides.side_height[inner] <= ceiling.max_height) {
+    const int outer = 1 - inner;
+    const FloorAppearance floor = SampleFloor(bgr, 0);
+    double best_score = 0, ratio = 0;
+    for (double r = std::max(1.04, factor / 1.1); r <= 1.1 * factor; r += 0.01) {
+      MergedLine line;
+      const double x = distance[outer] / r;
+      if (!FloorLineInImage(camera, *geometry, outer == 0 ? -x : x, &line)) continue;
+      const double score = BoundaryScore(bgr, floor, line, 0);
+      if (score > best_score) {
+        best_score = score;
+        ratio = r;
+      }
+    }
+    if (ratio > 0) {
+      check.band_contrast[inner] = WallBand(bgr, camera, *geometry, inner,
+                                            distance[inner] * ratio, distance[inner], floor);
+      check.band_contrast[outer] = WallBand(bgr, camera, *geometry, outer, distance[outer],
+                                            distance[outer] / ratio, floor);
+    }
+    if (check.band_contrast[inner] >= options.min_band_contrast &&
+        check.band_contrast[outer] >= options.min_band_contrast) {
+      // Two measures of one ratio, the ceiling sides' and the floor boundary's: their mean.
+      const double move = std::sqrt(ratio * factor);
+      distance[outer] /= move;
+      geometry->SetWallDistances(distance[0], distance[1]);
+      check.moved = true;
+      check.baseboard = true;
+      check.side = outer;
+      check.factor = 1 / move;
+      return check;
+    }
+  }
   const double trusted = sides.side_height[1 - inner];
   if (!(factor > 1 + options.min_disagreement) || trusted < ceiling.min_height ||
       trusted > ceiling.max_height) {
@@ -63,7 +183,6 @@ InnerLineCheck CheckInnerLine(const cv::Mat& bgr, const Camera& camera,
   check.line_support =
       CorridorLineSupport(bgr, camera, *geometry, wall_x, h, ceiling, edges);
   if (check.line_support >= options.max_line_support) return check;
-  double distance[2] = {geometry->LeftDistance(), geometry->RightDistance()};
   distance[inner] *= factor;
   geometry->SetWallDistances(distance[0], distance[1]);
   check.moved = true;

@@ -626,7 +626,8 @@ Status DepthRecoverer::MoveInnerWall(const WorkingImage& search, ImageEdges* edg
   // found: no side to trust (the trusted one must be in the ceiling search's range).
   const CeilingEstimate& found = result->ceiling;
   const double disagreement = CeilingDisagreement(found, geometry->camera_height);
-  if ((disagreement >= 0 && disagreement <= std::log(1 + options_.inner_line.min_disagreement)) ||
+  if ((disagreement >= 0 &&
+       disagreement <= std::log(1 + MinInnerLineDisagreement(options_.inner_line))) ||
       std::max(found.side_visible_support[0], found.side_visible_support[1]) <
           options_.inner_line.min_support) {
     return Status::Ok();
@@ -649,12 +650,7 @@ Status DepthRecoverer::MoveInnerWall(const WorkingImage& search, ImageEdges* edg
   result->ceiling = ceiling;
   *geometry = moved;
   result->moved_side = check.side;
-  std::ostringstream how;
-  how << (check.side == 0 ? "left" : "right") << " wall moved out " << std::setprecision(3)
-      << check.factor << "x: its junction is a line inside the floor (its ceiling junction gave "
-      << check.side_height[check.side] << " m, the other side's "
-      << check.side_height[1 - check.side] << " m)";
-  AddFallbackNote(how.str(), result);
+  AddFallbackNote(DescribeInnerLineCheck(check), result);
   return Status::Ok();
 }
 

@@ -1,13 +1,17 @@
 #!/usr/bin/env python3
 """Markdown table of corridor_benchmarks results (Google Benchmark JSON).
 
-Usage: python3 scripts/benchmark_table.py FILE.json
+Usage: python3 scripts/benchmark_table.py [--cpu] FILE.json
+  --cpu  the benchmarks' CPU time instead of their real time (on a machine shared with other
+         work, real time also counts the time the benchmark waited for a core)
 
 Reads the EndToEnd/<config>/<width>x<height> benchmarks and prints, per size, the median time per
-frame of every config (the mean when the run had no repetitions), in milliseconds, the ratios
-paper/best and best/floor (and paper/best_paper_scope, like for like, when that config ran), and
-best's width error on the timed frame (its width_error_mm counter): a fast answer is only worth
-its time if it is right. Standard library only.
+frame of every config (the mean when the run had no repetitions), in milliseconds: paper, default,
+best, both floors (floor: a colour Canny; floor_grey: the honest one, a grey Canny), then the
+others; the ratios paper/default, paper/best, default/floor_grey, best/floor_grey and best/floor
+(and paper/best_paper_scope, like for like, when that config ran), all from the same run; and
+default's and best's width errors on the timed frame (their width_error_mm counters): a fast
+answer is only worth its time if it is right. Standard library only.
 """
 
 import json
@@ -18,11 +22,16 @@ from collections import defaultdict
 
 NAME = re.compile(r"^EndToEnd/([^/]+)/(\d+)x(\d+)$")
 TO_MS = {"ns": 1e-6, "us": 1e-3, "ms": 1.0, "s": 1e3}
-MAIN_CONFIGS = ["paper", "best", "floor"]
+MAIN_CONFIGS = ["paper", "default", "best", "floor", "floor_grey"]
+# (numerator, denominator) of each ratio column.
+RATIOS = [("paper", "default"), ("paper", "best"), ("default", "floor_grey"),
+          ("best", "floor_grey"), ("best", "floor")]
+ERRORS = ["default", "best"]    # Configs whose width error is shown.
 
 
-def load_times(path):
-    """{(config, (w, h)): milliseconds} from the JSON: medians of repetitions, else means."""
+def load_times(path, field="real_time"):
+    """{(config, (w, h)): milliseconds} from the JSON (`field`: real_time or cpu_time): medians of
+    repetitions, else means."""
     with open(path, encoding="utf-8") as f:
         data = json.load(f)
     runs = defaultdict(list)      # Individual iterations-runs.
@@ -35,7 +44,7 @@ def load_times(path):
         if not match:
             continue
         key = (match.group(1), (int(match.group(2)), int(match.group(3))))
-        ms = b["real_time"] * TO_MS[b.get("time_unit", "ns")]
+        ms = b[field] * TO_MS[b.get("time_unit", "ns")]
         # Not from the stddev or cv aggregates, whose counters are spreads.
         if "width_error_mm" in b and b.get("aggregate_name", "median") in ("median", "mean"):
             width_errors[key] = b["width_error_mm"]
@@ -71,32 +80,36 @@ def fmt_mm(mm):
 
 
 def main(argv):
-    if len(argv) != 2:
+    cpu = "--cpu" in argv[1:]
+    paths = [a for a in argv[1:] if a != "--cpu"]
+    if len(paths) != 1:
         print(__doc__, file=sys.stderr)
         return 2
-    times, width_errors, repeated, context = load_times(argv[1])
+    path = paths[0]
+    times, width_errors, repeated, context = load_times(path, "cpu_time" if cpu else "real_time")
     if not times:
-        print(f"{argv[1]}: no EndToEnd/<config>/<width>x<height> results", file=sys.stderr)
+        print(f"{path}: no EndToEnd/<config>/<width>x<height> results", file=sys.stderr)
         return 1
     sizes = sorted({size for _, size in times}, key=lambda s: s[0] * s[1])
     extra = sorted({c for c, _ in times} - set(MAIN_CONFIGS))
     configs = [c for c in MAIN_CONFIGS if any(k[0] == c for k in times)] + extra
     stat = "median" if repeated else "mean"
-    print(f"Time per frame, ms ({stat} of real time; {context.get('num_cpus', '?')} CPUs "
+    clock = "CPU time" if cpu else "real time"
+    print(f"Time per frame, ms ({stat} of {clock}; {context.get('num_cpus', '?')} CPUs "
           f"at {context.get('mhz_per_cpu', '?')} MHz, {context.get('date', '')})")
     print()
     # paper against best on the same scope (no ceiling or end wall), when that was run.
-    scoped = any(k[0] == "best_paper_scope" for k in times)
-    print("| size | " + " | ".join(configs) + " | paper/best | best/floor |" +
-          (" paper/best_paper_scope |" if scoped else "") + " best's width error, mm |")
-    print("|---|" + "---:|" * (len(configs) + 3 + scoped))
+    ratios = RATIOS + ([("paper", "best_paper_scope")]
+                       if any(k[0] == "best_paper_scope" for k in times) else [])
+    print("| size | " + " | ".join(configs) + " | " +
+          " | ".join(f"{a}/{b}" for a, b in ratios) + " | " +
+          " | ".join(f"{c}'s width error, mm" for c in ERRORS) + " |")
+    print("|---|" + "---:|" * (len(configs) + len(ratios) + len(ERRORS)))
     for size in sizes:
-        row = [times.get((c, size)) for c in configs]
-        paper, best, floor = (times.get((c, size)) for c in MAIN_CONFIGS)
-        same_scope = f" {ratio(paper, times.get(('best_paper_scope', size)))} |" if scoped else ""
-        print(f"| {size[0]}x{size[1]} | " + " | ".join(fmt(t) for t in row) +
-              f" | {ratio(paper, best)} | {ratio(best, floor)} |{same_scope}"
-              f" {fmt_mm(width_errors.get(('best', size)))} |")
+        row = [fmt(times.get((c, size))) for c in configs]
+        row += [ratio(times.get((a, size)), times.get((b, size))) for a, b in ratios]
+        row += [fmt_mm(width_errors.get((c, size))) for c in ERRORS]
+        print(f"| {size[0]}x{size[1]} | " + " | ".join(row) + " |")
     return 0
 
 

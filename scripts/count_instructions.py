@@ -2,17 +2,18 @@
 """Instructions per frame of corridor_benchmarks' EndToEnd benchmarks, under callgrind.
 
 Usage: python3 scripts/count_instructions.py [REGEX] [--min_time=SECONDS]
-  REGEX       which benchmarks (Google Benchmark filter), default 'EndToEnd/(paper|best|best_paper_scope|best_tracked)/640x480$'
+  REGEX       which benchmarks (Google Benchmark filter), default: paper, default, best,
+              best_paper_scope, best_tracked and both floors at 640x480 (DEFAULT_FILTER)
   --min_time  per benchmark, in valgrind's slowed time; default 0.0001 (one timed frame) for a
               single frame, 2 for the drives (best_sequence, best_tracked: a few dozen frames)
 
 Timings on a shared machine move by tens of per cent from run to run; instruction counts do not,
-so they are what to compare across versions. Counts only inside DepthRecoverer::Recover
-(valgrind --toggle-collect), divided by the number of Recover calls read from callgrind's own call
-counts (Google Benchmark may call a benchmark more than once while it sizes the run, so its
+so they are what to compare across versions. Counts only inside the function that does one frame
+(valgrind --toggle-collect): DepthRecoverer::Recover, or for the floors bench::FloorFrame and
+bench::FloorGreyFrame; divided by the number of that function's calls read from callgrind's own
+call counts (Google Benchmark may call a benchmark more than once while it sizes the run, so its
 iteration count is not the number of frames). Needs valgrind and a build with
--DCORRIDOR_BUILD_BENCHMARKS=ON. The floor benchmark does not call Recover and is skipped.
-Standard library only.
+-DCORRIDOR_BUILD_BENCHMARKS=ON. Standard library only.
 """
 
 import os
@@ -22,14 +23,21 @@ import subprocess
 import sys
 import tempfile
 
-DEFAULT_FILTER = "EndToEnd/(paper|best|best_paper_scope|best_tracked)/640x480$"
+DEFAULT_FILTER = ("EndToEnd/(paper|default|best|best_paper_scope|best_tracked|floor|floor_grey)"
+                  "/640x480$")
 TOGGLE = "corridor::DepthRecoverer::Recover*"
 RECOVER = re.compile(r"DepthRecoverer::Recover\(")
+# The floors' per-frame functions (benchmarks/corridor_benchmarks.cc): (toggle, call pattern).
+FLOOR_FRAMES = {
+    "floor": ("corridor::bench::FloorFrame*", re.compile(r"bench::FloorFrame\(")),
+    "floor_grey": ("corridor::bench::FloorGreyFrame*", re.compile(r"bench::FloorGreyFrame\(")),
+}
 NAMED = re.compile(r"^(c?fn)=\((\d+)\)(?: (.*))?$")
 
 
-def recover_calls_and_total(path):
-    """(instructions collected, calls of Recover from outside Recover) from a callgrind file."""
+def recover_calls_and_total(path, frame=RECOVER):
+    """(instructions collected, calls of the per-frame function (`frame`, a regex on its name;
+    Recover by default) from outside it) from a callgrind file."""
     names = {}
     total = None
     calls = 0
@@ -43,7 +51,7 @@ def recover_calls_and_total(path):
                 kind, ident, name = match.groups()
                 if name:
                     names[ident] = name
-                is_recover = bool(RECOVER.search(names.get(ident, "")))
+                is_recover = bool(frame.search(names.get(ident, "")))
                 if kind == "fn":
                     current_is_recover = is_recover
                 else:
@@ -86,7 +94,7 @@ def main(argv):
         print("count_instructions: valgrind is not installed (apt-get install valgrind)",
               file=sys.stderr)
         return 1
-    names = [n for n in list_benchmarks(binary, regex) if "/floor/" not in n]
+    names = list_benchmarks(binary, regex)
     if not names:
         print(f"count_instructions: no benchmark matches {regex!r}", file=sys.stderr)
         return 1
@@ -97,14 +105,15 @@ def main(argv):
             drive = "best_sequence" in name or "best_tracked" in name
             seconds = min_time if min_time is not None else (2.0 if drive else 0.0001)
             out_file = os.path.join(tmp, "callgrind.out")
+            toggle, frame = FLOOR_FRAMES.get(name.split("/")[1], (TOGGLE, RECOVER))
             run = subprocess.run(
                 ["valgrind", "--tool=callgrind", f"--callgrind-out-file={out_file}",
-                 f"--toggle-collect={TOGGLE}", binary, f"--benchmark_filter=^{re.escape(name)}$",
+                 f"--toggle-collect={toggle}", binary, f"--benchmark_filter=^{re.escape(name)}$",
                  f"--benchmark_min_time={seconds}"], capture_output=True, text=True)
             if run.returncode != 0 or not os.path.exists(out_file):
                 print(f"| {name} | - | valgrind failed: {run.stderr.strip().splitlines()[-1:]} |")
                 continue
-            total, calls = recover_calls_and_total(out_file)
+            total, calls = recover_calls_and_total(out_file, frame)
             if not total or calls == 0:
                 print(f"| {name} | 0 | - |")
             else:

@@ -79,6 +79,43 @@ void ExpectRobustToOutliers(const std::string& solver_name, unsigned seed) {
 
 TEST(LmSolverTest, RobustLossSurvivesOutliers) { ExpectRobustToOutliers("lm", 7); }
 
+// Without an initial estimate "lm" starts from the closed form's: the same answer as when given
+// the closed form's estimate, and the truth from exact points at poses far from the
+// alternation's own start (zero yaw and offset, a 2 m width), as it was from that start.
+TEST(LmSolverTest, StartsFromTheClosedForm) {
+  SolverOptions from_default;
+  from_default.lm.start_from_closed_form = false;
+  std::unique_ptr<CorridorSolver> lm, lm_from_default, closed_form;
+  ASSERT_TRUE(CreateSolver("lm", SolverOptions(), &lm).ok());
+  ASSERT_TRUE(CreateSolver("lm", from_default, &lm_from_default).ok());
+  ASSERT_TRUE(CreateSolver("closed_form", SolverOptions(), &closed_form).ok());
+  for (const double yaw : {-0.35, 0.25}) {
+    for (const double width : {1.2, 4.5}) {
+      for (const double side : {-0.3, 0.25}) {
+        const CorridorGeometry truth = MakeGeometry(yaw, 0.08 - 0.1 * side, side * width, width,
+                                                    0.66);
+        CorridorObservation observation = ExactObservation(truth);
+        // Points a pixel off their lines, alternately, so that no two starts end identically by
+        // chance of an exact fit.
+        for (auto* points : {&observation.left, &observation.right}) {
+          for (size_t i = 0; i < points->size(); ++i) (*points)[i].x() += i % 2 ? 0.5 : -0.5;
+        }
+        SolverSummary start, alone, given, from_zero;
+        ASSERT_TRUE(closed_form->Solve(observation, nullptr, &start).ok());
+        ASSERT_TRUE(lm->Solve(observation, nullptr, &alone).ok());
+        ASSERT_TRUE(lm->Solve(observation, &start.estimate, &given).ok());
+        ASSERT_TRUE(lm_from_default->Solve(observation, nullptr, &from_zero).ok());
+        EXPECT_EQ(alone.estimate.width, given.estimate.width);
+        EXPECT_EQ(alone.estimate.yaw, given.estimate.yaw);
+        EXPECT_EQ(alone.iterations, given.iterations);
+        EXPECT_NEAR(alone.estimate.yaw, truth.yaw, 2e-3);
+        EXPECT_NEAR(alone.estimate.width, truth.width, 0.01 * truth.width);
+        EXPECT_NEAR(from_zero.estimate.width, alone.estimate.width, 1e-3 * truth.width);
+      }
+    }
+  }
+}
+
 TEST(JointSolverTest, RobustLossSurvivesOutliers) { ExpectRobustToOutliers("closed_form+joint", 11); }
 
 TEST(SolverFactoryTest, UnknownNameListsValidNames) {

@@ -12,6 +12,7 @@
 #include "synth/corridor_renderer.h"
 #include "synth/presets.h"
 #include "tests/support/corridor_frame.h"
+#include "tests/support/demo_corridor.h"
 
 namespace corridor {
 namespace {
@@ -82,23 +83,25 @@ TEST(InnerLineCheckTest, ANarrowVerticalViewStillMovesTheWall) {
   }
 }
 
-// The true geometry: both ceiling junctions agree, nothing moves.
-// The other wall put too far (a line beyond its junction taken for it): its ceiling comes out too
-// high, so the true wall's side is the lower one, as a wall put too near would make it. But that
-// wall's floor junction follows edges nearly all along (a box's edge or a floor line covers only
-// part of the way): it is not moved. Without that test it would be (the premise, checked with
-// max_line_support = 1).
+// The other wall put too far (a line on the wall beyond its junction taken for it): its ceiling
+// comes out too high, so the true wall's side is the lower one, as a wall put too near would make
+// it. Without the band test (min_band_contrast = 0) the true wall's floor junction follows edges
+// nearly all along (a box's edge or a floor line covers only part of the way): it is not moved
+// (and without that test it would be: the premise, checked with max_line_support = 1). With it,
+// both bands the moves would cross are wall, not floor: the far wall is moved back in.
 TEST(InnerLineCheckTest, AWallOnItsJunctionIsNotMovedWhenTheOtherIsTooFar) {
   const Camera camera = synth::PaperCamera(0.66);
   const synth::Frame frame = PlainFrame(camera);
   ASSERT_FALSE(frame.bgr.empty());
   const CorridorGeometry& truth = frame.truth;
+  InnerLineCheckOptions no_band;
+  no_band.min_band_contrast = 0;
   for (const int far_side : {0, 1}) {
     double distance[2] = {truth.LeftDistance(), truth.RightDistance()};
     distance[far_side] *= 1.4;
     CorridorGeometry wrong = truth;
     wrong.SetWallDistances(distance[0], distance[1]);
-    InnerLineCheckOptions always;
+    InnerLineCheckOptions always = no_band;
     always.max_line_support = 1;
     CorridorGeometry g = wrong;
     const InnerLineCheck premise =
@@ -107,11 +110,78 @@ TEST(InnerLineCheckTest, AWallOnItsJunctionIsNotMovedWhenTheOtherIsTooFar) {
     EXPECT_EQ(premise.side, 1 - far_side);
     g = wrong;
     const InnerLineCheck check =
-        CheckInnerLine(frame.bgr, camera, CeilingDetectorOptions(), InnerLineCheckOptions(), &g);
+        CheckInnerLine(frame.bgr, camera, CeilingDetectorOptions(), no_band, &g);
     EXPECT_FALSE(check.moved) << far_side;
     EXPECT_GE(check.line_support, InnerLineCheckOptions().max_line_support) << far_side;
     EXPECT_EQ(g.width, wrong.width);
+    g = wrong;
+    const InnerLineCheck band =
+        CheckInnerLine(frame.bgr, camera, CeilingDetectorOptions(), InnerLineCheckOptions(), &g);
+    ASSERT_TRUE(band.moved) << far_side;
+    EXPECT_TRUE(band.baseboard);
+    EXPECT_EQ(band.side, far_side);
+    EXPECT_NEAR(g.width, truth.width, 0.03 * truth.width) << far_side;
   }
+}
+
+// A baseboard's top taken for one junction: that wall is put too far by h / (h - b) (b the
+// generator's baseboard height, h the camera's), its ceiling too high by as much. The band between
+// the taken line and the junction below it is baseboard, as is the band above the other wall's
+// junction: the far wall is moved in, to the truth, and the note says so. Without the band test
+// (min_band_contrast = 0) the check would move the true wall out instead (the premise).
+TEST(InnerLineCheckTest, ABaseboardTopTakenForAJunctionMovesThatWallIn) {
+  const Camera camera = synth::PaperCamera(0.66);
+  const synth::Frame frame = PlainFrame(camera);
+  ASSERT_FALSE(frame.bgr.empty());
+  const CorridorGeometry& truth = frame.truth;
+  const double b = synth::SceneOptions().baseboard_height;
+  ASSERT_GT(b, 0.05);
+  const double too_far = truth.camera_height / (truth.camera_height - b);
+  for (const int far_side : {0, 1}) {
+    double distance[2] = {truth.LeftDistance(), truth.RightDistance()};
+    distance[far_side] *= too_far;
+    CorridorGeometry wrong = truth;
+    wrong.SetWallDistances(distance[0], distance[1]);
+    InnerLineCheckOptions no_band;
+    no_band.min_band_contrast = 0;
+    CorridorGeometry g = wrong;
+    const InnerLineCheck premise =
+        CheckInnerLine(frame.bgr, camera, CeilingDetectorOptions(), no_band, &g);
+    EXPECT_TRUE(!premise.moved || premise.side == 1 - far_side) << far_side;
+    g = wrong;
+    const InnerLineCheck check =
+        CheckInnerLine(frame.bgr, camera, CeilingDetectorOptions(), InnerLineCheckOptions(), &g);
+    ASSERT_TRUE(check.moved) << far_side;
+    EXPECT_TRUE(check.baseboard);
+    EXPECT_EQ(check.side, far_side);
+    EXPECT_NEAR(check.factor, 1 / too_far, 0.04);
+    EXPECT_GT(check.band_contrast[0], InnerLineCheckOptions().min_band_contrast);
+    EXPECT_GT(check.band_contrast[1], InnerLineCheckOptions().min_band_contrast);
+    EXPECT_NEAR(g.width, truth.width, 0.03 * truth.width) << far_side;
+    EXPECT_NEAR(g.offset, truth.offset, 0.05) << far_side;
+    EXPECT_EQ(g.yaw, truth.yaw);
+    EXPECT_EQ(g.pitch, truth.pitch);
+    const std::string note = DescribeInnerLineCheck(check);
+    EXPECT_NE(note.find(std::string(far_side == 0 ? "left" : "right") + " wall moved in"),
+              std::string::npos)
+        << note;
+  }
+}
+
+// The generated demo corridor's frame 4 (corridor_synth --preset=sequence --seed=7): its right
+// junction was a baseboard's top, and the inner-line check moved the true left wall out to match,
+// both walls then 18% too far. The width now follows the truth.
+TEST(InnerLineCheckTest, TheDemoCorridorsBaseboardFrameHasItsWidth) {
+  const synth::ScenePreset preset = testing_util::DemoCorridor();
+  synth::Frame frame;
+  ASSERT_TRUE(synth::RenderFrame(synth::BuildScene(preset.scene), preset.camera,
+                                 preset.poses.at(4), &frame)
+                  .ok());
+  RecoverDepthResult result;
+  ASSERT_TRUE(RecoverDepth(frame.bgr, preset.camera, RecoverDepthOptions(), &result).ok());
+  EXPECT_NEAR(result.geometry.width, frame.truth.width, 0.02 * frame.truth.width)
+      << result.fallback;
+  EXPECT_NE(result.fallback.find("wall moved in"), std::string::npos) << result.fallback;
 }
 
 TEST(InnerLineCheckTest, TheTrueGeometryStays) {

@@ -41,12 +41,14 @@ totals: 1400
 
 
 class ReadCallgrindTest(unittest.TestCase):
-    def read(self, text):
+    def read(self, text, frame=None):
         with tempfile.NamedTemporaryFile("w", suffix=".out", delete=False) as f:
             f.write(text)
             path = f.name
         try:
-            return count_instructions.recover_calls_and_total(path)
+            if frame is None:
+                return count_instructions.recover_calls_and_total(path)
+            return count_instructions.recover_calls_and_total(path, frame)
         finally:
             os.remove(path)
 
@@ -60,6 +62,18 @@ class ReadCallgrindTest(unittest.TestCase):
     def test_summary_used_when_totals_missing(self):
         text = DRIVE.replace("totals: 1400\n", "")
         self.assertEqual(self.read(text), (1400, 14))
+
+    def test_floor_frames_counted_by_their_own_function(self):
+        # The grey floor's body called 5 times; Recover never: its frames are the 5 calls.
+        text = ("events: Ir\nsummary: 500\n"
+                "fn=(1) corridor::(anonymous namespace)::FloorGrey(benchmark::State&, int, int)\n"
+                "cfn=(2) corridor::bench::FloorGreyFrame(cv::Mat const&, int, cv::Mat*, "
+                "cv::Mat*, cv::Mat*)\ncalls=5 0\n0 500\nfn=(2)\n0 500\ntotals: 500\n")
+        _, floor_grey = count_instructions.FLOOR_FRAMES["floor_grey"]
+        _, floor = count_instructions.FLOOR_FRAMES["floor"]
+        self.assertEqual(self.read(text, floor_grey), (500, 5))
+        self.assertEqual(self.read(text, floor), (500, 0))
+        self.assertEqual(self.read(text), (500, 0))
 
 
 if __name__ == "__main__":
