@@ -40,23 +40,6 @@ struct SetFigures {
   double abs_rel = 0;              // Mean AbsRel of the depth < 5 m over the frames ok.
 };
 
-// The frame status classes of the conventions: refused when the frame holds no corridor the
-// pipeline can trust, failed on the caller's or the machine's errors. (Any code not listed below,
-// such as a later refusal code, counts as refused: conservative for this guard.)
-std::string FrameClass(const Status& status) {
-  switch (status.code()) {
-    case StatusCode::kOk:
-      return "ok";
-    case StatusCode::kInvalidArgument:
-    case StatusCode::kNotFound:
-    case StatusCode::kIoError:
-    case StatusCode::kInternal:
-      return "failed";
-    default:
-      return "refused";
-  }
-}
-
 constexpr double kCap = 5.0;      // AbsRel < 5 m, as corridor_eval reports it.
 constexpr double kSlack = 0.10;   // Worse than the baseline by more than this (relative) fails.
 
@@ -76,7 +59,7 @@ SetFigures Evaluate(const std::vector<std::pair<synth::ScenePreset, std::vector<
       RecoverDepthResult result;
       recoverer->Recover(frame.bgr, preset.camera, &result);
       ++figures.frames;
-      const std::string status = FrameClass(result.status);
+      const std::string status = StatusClass(result.status.code());
       figures.refused += status == "refused";
       figures.failed += status == "failed";
       if (status != "ok") continue;
