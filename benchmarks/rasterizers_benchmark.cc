@@ -34,9 +34,12 @@ void BM_Rasterize(benchmark::State& state, const std::string& name, bool distort
 }
 
 #define SIZES ->Args({420, 360})->Args({640, 480})->Args({1280, 720})->Unit(benchmark::kMicrosecond)
-BENCHMARK_CAPTURE(BM_Rasterize, exact, std::string("exact"), false) SIZES;
-BENCHMARK_CAPTURE(BM_Rasterize, exact_distorted, std::string("exact"), true) SIZES;
-BENCHMARK_CAPTURE(BM_Rasterize, paper, std::string("paper"), false) SIZES;
+BENCHMARK_CAPTURE(BM_Rasterize, exact, std::string("exact"), false)
+SIZES;
+BENCHMARK_CAPTURE(BM_Rasterize, exact_distorted, std::string("exact"), true)
+SIZES;
+BENCHMARK_CAPTURE(BM_Rasterize, paper, std::string("paper"), false)
+SIZES;
 #undef SIZES
 
 }  // namespace

@@ -10,14 +10,14 @@ namespace corridor {
 // A pinhole camera with optional plumb_bob (Brown-Conrady) distortion, as in ROS camera_info,
 // plus the height of its optical centre above the floor.
 struct Camera {
-  int image_width = 0;                      // Pixels.
-  int image_height = 0;                     // Pixels.
-  double fx = 0.0;                          // Focal length in x, pixels.
-  double fy = 0.0;                          // Focal length in y, pixels.
-  double cx = 0.0;                          // Principal point x, pixels (pixel centres at integers).
-  double cy = 0.0;                          // Principal point y, pixels.
-  std::array<double, 5> distortion{};       // plumb_bob k1, k2, p1, p2, k3; all zero = rectified.
-  double mount_height = 0.0;                // Optical centre above the floor, metres (camera_height).
+  int image_width = 0;                 // Pixels.
+  int image_height = 0;                // Pixels.
+  double fx = 0.0;                     // Focal length in x, pixels.
+  double fy = 0.0;                     // Focal length in y, pixels.
+  double cx = 0.0;                     // Principal point x, pixels (pixel centres at integers).
+  double cy = 0.0;                     // Principal point y, pixels.
+  std::array<double, 5> distortion{};  // plumb_bob k1, k2, p1, p2, k3; all zero = rectified.
+  double mount_height = 0.0;           // Optical centre above the floor, metres (camera_height).
 
   // A camera from a horizontal field of view, principal point at the image centre.
   static Camera FromHorizontalFov(int width, int height, double hfov_rad, double mount_height);

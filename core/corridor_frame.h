@@ -28,9 +28,15 @@ struct CorridorRotation {
     using std::cos;
     using std::sin;
     const T ct = cos(pitch), st = sin(pitch), cp = cos(yaw), sp = sin(yaw);
-    m[0][0] = cp;      m[0][1] = T(0); m[0][2] = sp;
-    m[1][0] = st * sp; m[1][1] = ct;   m[1][2] = -st * cp;
-    m[2][0] = -ct * sp; m[2][1] = st;  m[2][2] = ct * cp;
+    m[0][0] = cp;
+    m[0][1] = T(0);
+    m[0][2] = sp;
+    m[1][0] = st * sp;
+    m[1][1] = ct;
+    m[1][2] = -st * cp;
+    m[2][0] = -ct * sp;
+    m[2][1] = st;
+    m[2][2] = ct * cp;
   }
   // Wall normal m = R e_x.
   Vec3<T> WallNormal() const { return {m[0][0], m[1][0], m[2][0]}; }

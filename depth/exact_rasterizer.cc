@@ -11,16 +11,16 @@ namespace {
 
 // The per-frame constants of the box model.
 struct BoxModel {
-  float n_y, n_z;            // Floor normal (n_x = 0).
-  float m_x, m_y, m_z;       // Wall normal.
-  float h;                   // Camera height.
-  float d_left, d_right;     // Distances to the walls.
-  float ceiling_y;           // Y_W of the ceiling (h - H_c, negative), or 0 when unknown.
-  bool has_ceiling;          // Render the ceiling.
-  float min_wall_y;          // Without a ceiling: wall points with Y_W below this get 0.
-  float max_range;           // Depth cap.
-  float d_x, d_y, d_z;       // Corridor axis (for the end wall).
-  float end;                 // Z_W of the end wall, or +inf when there is none.
+  float n_y, n_z;         // Floor normal (n_x = 0).
+  float m_x, m_y, m_z;    // Wall normal.
+  float h;                // Camera height.
+  float d_left, d_right;  // Distances to the walls.
+  float ceiling_y;        // Y_W of the ceiling (h - H_c, negative), or 0 when unknown.
+  bool has_ceiling;       // Render the ceiling.
+  float min_wall_y;       // Without a ceiling: wall points with Y_W below this get 0.
+  float max_range;        // Depth cap.
+  float d_x, d_y, d_z;    // Corridor axis (for the end wall).
+  float end;              // Z_W of the end wall, or +inf when there is none.
 
   // Depth of the ray (x, y, 1); 0 when no modelled surface is hit within range.
   float Depth(float x, float y) const {
@@ -75,10 +75,10 @@ BoxModel MakeBoxModel(const CorridorGeometry& g, const RasterizerOptions& option
 
 // The per-row constants of the undistorted loop.
 struct RowConstants {
-  float nr;               // n.r of the row (n has no x part).
-  float z_plane;          // Floor depth, or the ceiling's above the horizon (inf: neither).
-  float mr0, mr_step;     // m.r at u = 0, and its change per pixel.
-  float dr0, dr_step;     // d.r (corridor axis) at u = 0, and its change per pixel.
+  float nr;            // n.r of the row (n has no x part).
+  float z_plane;       // Floor depth, or the ceiling's above the horizon (inf: neither).
+  float mr0, mr_step;  // m.r at u = 0, and its change per pixel.
+  float dr0, dr_step;  // d.r (corridor axis) at u = 0, and its change per pixel.
 };
 
 using RowKernel = void (*)(const BoxModel&, const RowConstants&, int, int, float*);

@@ -123,8 +123,10 @@ Status PaperRasterizer::Render(const CorridorGeometry& geometry, const Camera& c
           !AlongSegment(left[k], right[k], 0, u, &v_far, &z_far_seg) || v_near <= v_far) {
         continue;
       }
-      const int v0 = RoundedIndex(v_far, [](double x) { return std::ceil(x); }, 0, height);
-      const int v1 = RoundedIndex(v_near, [](double x) { return std::floor(x); }, -1, height - 1);
+      const int v0 = RoundedIndex(
+          v_far, [](double x) { return std::ceil(x); }, 0, height);
+      const int v1 = RoundedIndex(
+          v_near, [](double x) { return std::floor(x); }, -1, height - 1);
       for (int v = v0; v <= v1; ++v) {
         if (!floor_cone.Contains(u, v)) continue;
         const double sigma = (v_near - v) / (v_near - v_far);
@@ -145,10 +147,12 @@ Status PaperRasterizer::Render(const CorridorGeometry& geometry, const Camera& c
             std::abs(u_near - u_far) < 1e-9) {
           continue;
         }
-        const int u0 = RoundedIndex(std::min(u_near, u_far), [](double x) { return std::ceil(x); },
-                                    0, width);
-        const int u1 = RoundedIndex(std::max(u_near, u_far), [](double x) { return std::floor(x); },
-                                    -1, width - 1);
+        const int u0 = RoundedIndex(
+            std::min(u_near, u_far), [](double x) { return std::ceil(x); },
+            0, width);
+        const int u1 = RoundedIndex(
+            std::max(u_near, u_far), [](double x) { return std::floor(x); },
+            -1, width - 1);
         for (int u = u0; u <= u1; ++u) {
           if (!cone.Contains(u, v)) continue;
           const double sigma = (u - u_near) / (u_far - u_near);

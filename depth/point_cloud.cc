@@ -17,8 +17,9 @@ Status DepthToPointCloud(const RayTable& rays, const cv::Mat& depth_m, const cv:
   }
   const bool colour = !bgr.empty();
   if (colour && (bgr.type() != CV_8UC3 || bgr.size() != depth_m.size())) {
-    return Status::InvalidArgument("point cloud: the colour image must be 8-bit BGR of the depth's "
-                                   "size");
+    return Status::InvalidArgument(
+        "point cloud: the colour image must be 8-bit BGR of the depth's "
+        "size");
   }
   const size_t valid = static_cast<size_t>(cv::countNonZero(depth_m > 0));
   cloud->xyz.reserve(3 * valid);

@@ -22,12 +22,12 @@ bool StringToRasterizerType(const std::string& name, RasterizerType* type);
 std::string ValidRasterizerNames();
 
 struct RasterizerOptions {
-  double max_range = 40.0;   // Depth beyond this gets 0 (no estimate), m (the paper's far range).
-  double max_height = 2.5;   // Without a ceiling estimate, wall points higher than this above the floor get 0, m.
-  bool use_ceiling = true;   // Render the ceiling plane when the geometry has a ceiling height.
-  int paper_planes = 96;     // "paper": number of depth planes between the nearest visible floor and max_range.
-  bool use_avx2 = true;      // "exact": AVX2 rows where the CPU has it (the same depths as the baseline rows; false = baseline).
-  bool plane_spans = true;   // "exact": each row's run where the floor or ceiling is surely nearest is filled without per-pixel divisions (the same depths; false = every pixel divides).
+  double max_range = 40.0;  // Depth beyond this gets 0 (no estimate), m (the paper's far range).
+  double max_height = 2.5;  // Without a ceiling estimate, wall points higher than this above the floor get 0, m.
+  bool use_ceiling = true;  // Render the ceiling plane when the geometry has a ceiling height.
+  int paper_planes = 96;    // "paper": number of depth planes between the nearest visible floor and max_range.
+  bool use_avx2 = true;     // "exact": AVX2 rows where the CPU has it (the same depths as the baseline rows; false = baseline).
+  bool plane_spans = true;  // "exact": each row's run where the floor or ceiling is surely nearest is filled without per-pixel divisions (the same depths; false = every pixel divides).
 
   bool Check(std::string* why) const;
 };

@@ -12,7 +12,9 @@
 namespace corridor {
 
 struct ResidualLoss {
-  enum class Kind { kNone, kHuber, kCauchy };
+  enum class Kind { kNone,
+                    kHuber,
+                    kCauchy };
   Kind kind = Kind::kNone;  // Which rho.
   double scale = 1.0;       // a: residuals below it (pixels) count as in least squares.
 

@@ -23,48 +23,48 @@ bool ParseSolverChain(const std::string& name, std::vector<SolverType>* chain, s
 
 // The paper's exhaustive search (III-B/C), with an optional coarse-to-fine refinement.
 struct GridSearchOptions {
-  double yaw_min = -0.314;           // Yaw range start, rad (paper: -0.314).
-  double yaw_max = 0.314;            // Yaw range end, rad (paper: 0.314).
-  double yaw_step = 0.05;            // Yaw step, rad (paper: 0.05).
-  double pitch_min = -0.314;         // Pitch range start lambda_1, rad.
-  double pitch_max = 0.314;          // Pitch range end lambda_2, rad.
-  double pitch_step = 0.05;          // Pitch step alpha, rad (paper: 0.05).
-  double offset_min = -2.0;          // Lateral offset range start, m.
-  double offset_max = 2.0;           // Lateral offset range end, m.
-  double offset_step = 0.05;         // Lateral offset step, m.
-  double width_min = 0.5;            // Corridor width range start, m.
-  double width_max = 10.0;           // Corridor width range end, m.
-  double width_step = 0.05;          // Corridor width step, m.
-  int refinement_levels = 2;         // Coarse-to-fine levels after the full grid (0 = paper's plain grid).
-  double refinement_factor = 10.0;   // Each level divides the steps by this, around the best cell.
-  bool absolute_cost = true;         // Minimise sum |r| as the paper's E_G; false: sum r^2.
+  double yaw_min = -0.314;          // Yaw range start, rad (paper: -0.314).
+  double yaw_max = 0.314;           // Yaw range end, rad (paper: 0.314).
+  double yaw_step = 0.05;           // Yaw step, rad (paper: 0.05).
+  double pitch_min = -0.314;        // Pitch range start lambda_1, rad.
+  double pitch_max = 0.314;         // Pitch range end lambda_2, rad.
+  double pitch_step = 0.05;         // Pitch step alpha, rad (paper: 0.05).
+  double offset_min = -2.0;         // Lateral offset range start, m.
+  double offset_max = 2.0;          // Lateral offset range end, m.
+  double offset_step = 0.05;        // Lateral offset step, m.
+  double width_min = 0.5;           // Corridor width range start, m.
+  double width_max = 10.0;          // Corridor width range end, m.
+  double width_step = 0.05;         // Corridor width step, m.
+  int refinement_levels = 2;        // Coarse-to-fine levels after the full grid (0 = paper's plain grid).
+  double refinement_factor = 10.0;  // Each level divides the steps by this, around the best cell.
+  bool absolute_cost = true;        // Minimise sum |r| as the paper's E_G; false: sum r^2.
 
   bool Check(std::string* why) const;
 };
 
 // Ceres Levenberg-Marquardt, for "lm" (the stage functors) and "joint".
 struct LmOptions {
-  double max_abs_yaw = 1.2;          // Bound on |yaw|, rad.
-  double max_abs_pitch = 1.2;        // Bound on |pitch|, rad.
-  int max_iterations = 50;           // Iteration limit per stage solve.
-  double function_tolerance = 1e-10; // Ceres relative cost-change tolerance.
-  double parameter_tolerance = 1e-10;// Ceres relative step tolerance.
-  double gradient_tolerance = 1e-12; // Ceres gradient tolerance.
-  double initial_width = 2.0;        // Width used when no initial estimate is given, m.
-  bool start_from_closed_form = true; // "lm" without an initial estimate starts from the closed form's (geometry.md section 4), not from zero yaw/offset and initial_width; "joint" always does.
+  double max_abs_yaw = 1.2;            // Bound on |yaw|, rad.
+  double max_abs_pitch = 1.2;          // Bound on |pitch|, rad.
+  int max_iterations = 50;             // Iteration limit per stage solve.
+  double function_tolerance = 1e-10;   // Ceres relative cost-change tolerance.
+  double parameter_tolerance = 1e-10;  // Ceres relative step tolerance.
+  double gradient_tolerance = 1e-12;   // Ceres gradient tolerance.
+  double initial_width = 2.0;          // Width used when no initial estimate is given, m.
+  bool start_from_closed_form = true;  // "lm" without an initial estimate starts from the closed form's (geometry.md section 4), not from zero yaw/offset and initial_width; "joint" always does.
 
   bool Check(std::string* why) const;
 };
 
 // Options shared by every solver.
 struct SolverOptions {
-  std::string loss = "huber";         // Robust loss inside both functors: "none", "huber", "cauchy".
-  double loss_scale = 2.0;            // Loss scale, pixels.
-  int max_rounds = 20;                // Alternation rounds of stage 1 then stage 2 (grid, lm).
-  double round_tolerance = 1e-6;      // Stop alternating when no parameter moves more than this.
-  double initial_pitch = 0.0;         // Pitch prior theta_0 when no initial estimate is given, rad.
-  GridSearchOptions grid;             // For "grid".
-  LmOptions lm;                       // For "lm".
+  std::string loss = "huber";     // Robust loss inside both functors: "none", "huber", "cauchy".
+  double loss_scale = 2.0;        // Loss scale, pixels.
+  int max_rounds = 20;            // Alternation rounds of stage 1 then stage 2 (grid, lm).
+  double round_tolerance = 1e-6;  // Stop alternating when no parameter moves more than this.
+  double initial_pitch = 0.0;     // Pitch prior theta_0 when no initial estimate is given, rad.
+  GridSearchOptions grid;         // For "grid".
+  LmOptions lm;                   // For "lm".
 
   bool Check(std::string* why) const;
 };

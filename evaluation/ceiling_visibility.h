@@ -12,7 +12,7 @@ namespace corridor {
 
 // What counts as a visible ceiling junction.
 struct CeilingVisibilityOptions {
-  double max_depth = 40.0;          // Farthest junction point considered, m along the corridor (or the end wall, if nearer).
+  double max_depth = 40.0;           // Farthest junction point considered, m along the corridor (or the end wall, if nearer).
   double min_length_fraction = 0.1;  // Visible when one junction's image length inside the frame reaches this fraction of the image's smaller side.
 };
 

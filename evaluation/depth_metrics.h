@@ -9,16 +9,16 @@ namespace corridor {
 
 // Depth metrics of docs/geometry.md, section 7, for one image or averaged over a scene.
 struct DepthMetrics {
-  double abs_rel = 0;     // mean |gt - pred| / gt
-  double sq_rel = 0;      // mean (gt - pred)^2 / gt
-  double rmse = 0;        // sqrt(mean (gt - pred)^2)
-  double rmse_log = 0;    // sqrt(mean (ln gt - ln pred)^2)   (standard)
-  double rmse_log10 = 0;  // sqrt(mean (log10 gt - log10 pred)^2)   (the paper's printed RMSElog)
-  double log10 = 0;       // mean |log10 gt - log10 pred|
-  double delta1 = 0;      // fraction with max(gt/pred, pred/gt) < 1.25
-  double delta2 = 0;      // ... < 1.25^2
-  double delta3 = 0;      // ... < 1.25^3
-  double coverage = 0;    // predicted (> 0) pixels among those with 0 < gt <= cap
+  double abs_rel = 0;         // mean |gt - pred| / gt
+  double sq_rel = 0;          // mean (gt - pred)^2 / gt
+  double rmse = 0;            // sqrt(mean (gt - pred)^2)
+  double rmse_log = 0;        // sqrt(mean (ln gt - ln pred)^2)   (standard)
+  double rmse_log10 = 0;      // sqrt(mean (log10 gt - log10 pred)^2)   (the paper's printed RMSElog)
+  double log10 = 0;           // mean |log10 gt - log10 pred|
+  double delta1 = 0;          // fraction with max(gt/pred, pred/gt) < 1.25
+  double delta2 = 0;          // ... < 1.25^2
+  double delta3 = 0;          // ... < 1.25^3
+  double coverage = 0;        // predicted (> 0) pixels among those with 0 < gt <= cap
   int64_t num_gt = 0;         // Pixels with 0 < gt <= cap.
   int64_t num_evaluated = 0;  // Of those, pixels that also have a prediction > 0.
   int num_images = 1;         // Images averaged into this record.

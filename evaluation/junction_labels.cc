@@ -15,7 +15,7 @@ namespace {
 
 // The columns junctions.csv must have, in any order.
 const char* const kColumns[] = {"file", "width", "height", "lx1", "ly1", "lx2", "ly2", "rx1",
-                                "ry1",  "rx2",   "ry2",    "kind", "quality", "fx", "fy", "cx",
+                                "ry1", "rx2", "ry2", "kind", "quality", "fx", "fy", "cx",
                                 "cy"};
 
 bool ParseNumber(const std::string& text, double* value) {
@@ -76,7 +76,8 @@ Status ReadJunctionLabels(const std::string& path, std::vector<JunctionLabel>* l
     double w = 0, h = 0;
     if (label.file.empty() || !ParseNumber(field("width"), &w) || !ParseNumber(field("height"), &h) ||
         !(w > 0 && h > 0)) {
-      return Status::InvalidArgument(where + ": a file name and a positive width and height are "
+      return Status::InvalidArgument(where +
+                                     ": a file name and a positive width and height are "
                                      "required");
     }
     label.width = static_cast<int>(w);
@@ -140,7 +141,7 @@ LabelScore ScoreAgainstLabel(const JunctionLabel& label, bool ok, const Corridor
     score.side_error[s] = error;
     worst = std::max(worst, error);
   }
-  score.verdict = worst <= 0.02 ? LabelVerdict::kRight
+  score.verdict = worst <= 0.02  ? LabelVerdict::kRight
                   : worst > 0.05 ? LabelVerdict::kOkButWrong
                                  : LabelVerdict::kRough;
   return score;

@@ -15,13 +15,13 @@ namespace corridor {
 // One photo's hand labels (junctions.csv, as tests/data/real-corridors/README.md describes it):
 // two points on each visible floor/wall junction, in raw pixels of the file as stored.
 struct JunctionLabel {
-  std::string file;               // The photo's file name, beside junctions.csv.
-  int width = 0, height = 0;      // Its size, pixels.
-  bool has_side[2] = {false, false};                // Left, right: labelled (not hidden).
-  std::array<Eigen::Vector2d, 2> side[2];           // Left, right: near point, far point.
-  std::string kind;               // "corridor", or "other" (a view not along one corridor).
-  std::string quality;            // "sure", or "approx" (partly inferred).
-  bool has_camera = false;        // The intrinsics below are known.
+  std::string file;                        // The photo's file name, beside junctions.csv.
+  int width = 0, height = 0;               // Its size, pixels.
+  bool has_side[2] = {false, false};       // Left, right: labelled (not hidden).
+  std::array<Eigen::Vector2d, 2> side[2];  // Left, right: near point, far point.
+  std::string kind;                        // "corridor", or "other" (a view not along one corridor).
+  std::string quality;                     // "sure", or "approx" (partly inferred).
+  bool has_camera = false;                 // The intrinsics below are known.
   double fx = 0, fy = 0, cx = 0, cy = 0;
 };
 
@@ -36,10 +36,10 @@ bool ProjectedJunction(const CorridorGeometry& geometry, const Camera& camera, i
 
 // What a frame's reported junctions are worth against a label.
 enum class LabelVerdict {
-  kRight,        // Reported ok, every labelled side within 2% of the image height.
-  kRough,        // Reported ok, in between.
-  kOkButWrong,   // Reported ok, a labelled side off by more than 5% of the height.
-  kRefused,      // No geometry reported.
+  kRight,       // Reported ok, every labelled side within 2% of the image height.
+  kRough,       // Reported ok, in between.
+  kOkButWrong,  // Reported ok, a labelled side off by more than 5% of the height.
+  kRefused,     // No geometry reported.
 };
 const char* LabelVerdictName(LabelVerdict verdict);
 

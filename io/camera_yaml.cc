@@ -60,7 +60,8 @@ Status ReadIntrinsics(const YAML::Node& root, const YamlContext& ctx, Camera* ca
   }
   // K = [fx s cx; 0 fy cy; 0 0 1]. The Camera model has no skew.
   if (k[1] != 0 || k[3] != 0 || k[6] != 0 || k[7] != 0 || k[8] != 1) {
-    return Status::InvalidArgument(ctx.path + ": key 'camera_matrix' must be [fx 0 cx; 0 fy cy; "
+    return Status::InvalidArgument(ctx.path +
+                                   ": key 'camera_matrix' must be [fx 0 cx; 0 fy cy; "
                                    "0 0 1] (no skew)");
   }
   camera->fx = k[0];

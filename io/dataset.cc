@@ -155,7 +155,7 @@ Status CheckDepthMatchesImage(const std::string& depth_path, const cv::Size& ima
 }
 
 Status ListImages(const std::string& dir, std::vector<std::string>* paths) {
-  static const std::set<std::string> kExtensions = {".png", ".jpg",  ".jpeg", ".bmp",
+  static const std::set<std::string> kExtensions = {".png", ".jpg", ".jpeg", ".bmp",
                                                     ".tif", ".tiff"};
   paths->clear();
   std::error_code ec;

@@ -140,8 +140,10 @@ Status ReadDepthPng(const std::string& path, cv::Mat* depth_m) {
   Status status = DecodeFile(path, &image);
   if (!status.ok()) return status;
   if (image.type() != CV_16UC1) {
-    return Status::InvalidArgument(path + ": depth image must be 16-bit single-channel (16UC1), "
-                                   "but it is " + cv::typeToString(image.type()));
+    return Status::InvalidArgument(path +
+                                   ": depth image must be 16-bit single-channel (16UC1), "
+                                   "but it is " +
+                                   cv::typeToString(image.type()));
   }
   image.convertTo(*depth_m, CV_32F, 0.001);  // Millimetres -> metres; 0 stays 0.
   return Status::Ok();

@@ -30,7 +30,8 @@ Status WritePlyAtomic(const std::string& path, const PointCloud& cloud) {
   const size_t n = cloud.size();
   std::string bytes =
       "ply\nformat binary_little_endian 1.0\ncomment corridor-depth: camera frame "
-      "(x right, y down, z forward), metres\nelement vertex " + std::to_string(n) +
+      "(x right, y down, z forward), metres\nelement vertex " +
+      std::to_string(n) +
       "\nproperty float x\nproperty float y\nproperty float z\nproperty uchar red\n"
       "property uchar green\nproperty uchar blue\nend_header\n";
   bytes.reserve(bytes.size() + n * 15);

@@ -47,9 +47,7 @@ bool IsImageTopicType(const std::string& type) {
 Status DecodeRawImage(const std::string& encoding, int width, int height, int step,
                       const uint8_t* data, size_t size, cv::Mat* bgr) {
   static const std::map<std::string, std::pair<int, int>> kTypes = {
-      {"rgb8", {CV_8UC3, cv::COLOR_RGB2BGR}},  {"bgr8", {CV_8UC3, -1}},
-      {"mono8", {CV_8UC1, cv::COLOR_GRAY2BGR}}, {"bgra8", {CV_8UC4, cv::COLOR_BGRA2BGR}},
-      {"rgba8", {CV_8UC4, cv::COLOR_RGBA2BGR}}};
+      {"rgb8", {CV_8UC3, cv::COLOR_RGB2BGR}}, {"bgr8", {CV_8UC3, -1}}, {"mono8", {CV_8UC1, cv::COLOR_GRAY2BGR}}, {"bgra8", {CV_8UC4, cv::COLOR_BGRA2BGR}}, {"rgba8", {CV_8UC4, cv::COLOR_RGBA2BGR}}};
   const auto type = kTypes.find(encoding);
   if (type == kTypes.end()) {
     return Status::InvalidArgument("unsupported image encoding '" + encoding +
@@ -75,7 +73,7 @@ Status DecodeRawImage(const std::string& encoding, int width, int height, int st
 }
 
 Status DecodeCompressedImage(const std::string& format, const std::vector<uint8_t>& data,
-                        cv::Mat* bgr) {
+                             cv::Mat* bgr) {
   std::string lower = format;
   std::transform(lower.begin(), lower.end(), lower.begin(), ::tolower);
   if (lower.find("jpeg") == std::string::npos && lower.find("jpg") == std::string::npos &&

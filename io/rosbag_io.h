@@ -30,9 +30,9 @@ struct BagStamp {
 
 // One topic of a bag.
 struct BagTopic {
-  std::string name;      // e.g. "/zed2/left/image_rect_color".
-  std::string type;      // e.g. "sensor_msgs/Image".
-  uint32_t messages = 0; // How many messages it has.
+  std::string name;       // e.g. "/zed2/left/image_rect_color".
+  std::string type;       // e.g. "sensor_msgs/Image".
+  uint32_t messages = 0;  // How many messages it has.
 };
 
 // The topics of a bag, sorted by name. NotFound for a missing file, InvalidArgument for a file
@@ -60,10 +60,10 @@ Status ReadBagCameraInfo(const std::string& bag_path, const std::string& info_to
 
 // One image message, decoded.
 struct BagImage {
-  BagStamp stamp;       // header.stamp of the message.
-  std::string frame_id; // header.frame_id.
-  cv::Mat bgr;          // 8-bit BGR; empty when decoding failed.
-  Status status;        // Why the image could not be decoded (an unsupported encoding names it).
+  BagStamp stamp;        // header.stamp of the message.
+  std::string frame_id;  // header.frame_id.
+  cv::Mat bgr;           // 8-bit BGR; empty when decoding failed.
+  Status status;         // Why the image could not be decoded (an unsupported encoding names it).
 };
 
 // Decodes a sensor_msgs/Image's pixels (rgb8, bgr8, mono8, bgra8, rgba8) into BGR; any other

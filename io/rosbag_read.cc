@@ -31,11 +31,14 @@ Status OpenForReading(const std::string& path, rosbag::Bag* bag) {
   try {
     bag->open(path, rosbag::bagmode::Read);
   } catch (const rosbag::BagUnindexedException&) {
-    return Status::InvalidArgument(path + ": the bag is unindexed (truncated or not closed); "
+    return Status::InvalidArgument(path +
+                                   ": the bag is unindexed (truncated or not closed); "
                                    "repair it with `rosbag reindex`");
   } catch (const std::exception& e) {
-    return Status::InvalidArgument(path + ": not a readable ROS 1 bag (truncated or another "
-                                   "format): " + e.what());
+    return Status::InvalidArgument(path +
+                                   ": not a readable ROS 1 bag (truncated or another "
+                                   "format): " +
+                                   e.what());
   }
   return Status::Ok();
 }
@@ -253,7 +256,8 @@ Status ListBagTopics(const std::string& bag_path, std::vector<BagTopic>* topics)
     t.messages = u.U32();
     topics->push_back(t);
   }
-  status = child->Finish(bag_path + ": the rosbag library crashed reading the bag's index: the "
+  status = child->Finish(bag_path +
+                         ": the rosbag library crashed reading the bag's index: the "
                          "bag is corrupt");
   if (!status.ok()) return status;
   if (!complete) return Status::InvalidArgument(bag_path + ": the bag's index could not be read");
@@ -281,9 +285,8 @@ Status ChooseBagTopics(const std::string& bag_path, const std::string& requested
     }
     if (images.size() != 1) {
       return Status::InvalidArgument(
-          bag_path + (images.empty() ? ": has no sensor_msgs/Image or CompressedImage topic"
-                                     : ": has several image topics; choose one with "
-                                       "--image_topic") +
+          bag_path + (images.empty() ? ": has no sensor_msgs/Image or CompressedImage topic" : ": has several image topics; choose one with "
+                                                                                               "--image_topic") +
           "; its topics: " + TopicList(topics));
     }
     *image_topic = images.front();
@@ -363,7 +366,8 @@ Status ReadBagCameraInfo(const std::string& bag_path, const std::string& info_to
     id = u.Str();
     if (!u.ok()) return Status::InvalidArgument(where + ": malformed CameraInfo");
   }
-  status = child->Finish(where + ": the rosbag library crashed reading the CameraInfo: the bag "
+  status = child->Finish(where +
+                         ": the rosbag library crashed reading the CameraInfo: the bag "
                          "is corrupt");
   if (!status.ok()) return status;
   if (!found) return Status::InvalidArgument(where + ": no sensor_msgs/CameraInfo message");
@@ -418,7 +422,8 @@ Status BagImageReader::Open(const std::string& bag_path, const std::string& imag
   char tag = 0;
   std::string record;
   if (!impl->child->Read(&tag, &record)) {
-    status = impl->child->Finish(bag_path + ": the rosbag library crashed opening the bag: the "
+    status = impl->child->Finish(bag_path +
+                                 ": the rosbag library crashed opening the bag: the "
                                  "bag is corrupt");
     return status.ok() ? Status::InvalidArgument(bag_path + ": the bag could not be read") : status;
   }

@@ -28,7 +28,7 @@ BagDepthWriter::~BagDepthWriter() {
 }
 
 Status BagDepthWriter::Open(const std::string& bag_path, std::unique_ptr<BagDepthWriter>* writer,
-                           const std::string& encoding) {
+                            const std::string& encoding) {
   if (!IsDepthEncoding(encoding)) {
     return Status::InvalidArgument("depth encoding '" + encoding + "' (supported: 32FC1, 16UC1)");
   }

@@ -56,7 +56,7 @@ void Blur(const cv::Mat& image, int from, int to, binomial::Kernel5 k, cv::Mat* 
 // The same loops compiled for AVX2: integer arithmetic, the same results.
 template <int C, int kTaps>
 __attribute__((target("avx2"))) void BlurAvx2(const cv::Mat& image, int from, int to,
-                                             binomial::Kernel5 k, cv::Mat* out) {
+                                              binomial::Kernel5 k, cv::Mat* out) {
   BlurBody<C, kTaps>(image, from, to, k, out);
 }
 #endif
@@ -72,10 +72,14 @@ BlurFn ChooseVariant() {
 template <int kTaps>
 BlurFn ChooseBlur(int channels) {
   switch (channels) {
-    case 1: return ChooseVariant<1, kTaps>();
-    case 2: return ChooseVariant<2, kTaps>();
-    case 3: return ChooseVariant<3, kTaps>();
-    default: return ChooseVariant<4, kTaps>();
+    case 1:
+      return ChooseVariant<1, kTaps>();
+    case 2:
+      return ChooseVariant<2, kTaps>();
+    case 3:
+      return ChooseVariant<3, kTaps>();
+    default:
+      return ChooseVariant<4, kTaps>();
   }
 }
 
@@ -149,8 +153,9 @@ Status BinomialBlur(const cv::Mat& image, int from, int to, int taps, cv::Mat* o
     return Status::InvalidArgument("binomial blur: taps must be 3 or 5");
   }
   if (from < 0 || to > image.rows || from >= to) {
-    return Status::InvalidArgument("binomial blur: rows [from, to) must be a non-empty range of "
-                                   "the image's");
+    return Status::InvalidArgument(
+        "binomial blur: rows [from, to) must be a non-empty range of "
+        "the image's");
   }
   RunBlur(taps == 3 ? ChooseBlur<3>(image.channels()) : ChooseBlur<5>(image.channels()), image,
           from, to, {}, out);

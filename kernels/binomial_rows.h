@@ -16,13 +16,13 @@ namespace binomial {
 
 // v[i] = r0 + 2 r1 + r2 (at most 4 * 255).
 CORRIDOR_ALWAYS_INLINE inline void ColumnSums3(const uint8_t* r0, const uint8_t* r1, const uint8_t* r2, int n,
-                        uint16_t* __restrict v) {
+                                               uint16_t* __restrict v) {
   for (int i = 0; i < n; ++i) v[i] = static_cast<uint16_t>(r0[i] + 2 * r1[i] + r2[i]);
 }
 
 // v[i] = r0 + 4 r1 + 6 r2 + 4 r3 + r4 (at most 16 * 255).
 CORRIDOR_ALWAYS_INLINE inline void ColumnSums5(const uint8_t* r0, const uint8_t* r1, const uint8_t* r2,
-                        const uint8_t* r3, const uint8_t* r4, int n, uint16_t* __restrict v) {
+                                               const uint8_t* r3, const uint8_t* r4, int n, uint16_t* __restrict v) {
   for (int i = 0; i < n; ++i) {
     v[i] = static_cast<uint16_t>(r0[i] + r4[i] + 4 * (r1[i] + r3[i]) + 6 * r2[i]);
   }

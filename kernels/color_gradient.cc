@@ -18,8 +18,8 @@ namespace {
 // |gx| + |gy| is larger.
 template <bool kFirst>
 CORRIDOR_ALWAYS_INLINE inline void SobelRowBody(const uchar* above, const uchar* centre, const uchar* below, int cols,
-                         short* __restrict s, short* __restrict t, short* __restrict bx,
-                         short* __restrict by, short* __restrict best) {
+                                                short* __restrict s, short* __restrict t, short* __restrict bx,
+                                                short* __restrict by, short* __restrict best) {
   for (int u = 0; u < cols; ++u) {
     s[u + 1] = static_cast<short>(above[u] + 2 * centre[u] + below[u]);
     t[u + 1] = static_cast<short>(below[u] - above[u]);
@@ -48,7 +48,7 @@ CORRIDOR_ALWAYS_INLINE inline void SobelRowBody(const uchar* above, const uchar*
 }
 
 using SobelRowFn = void (*)(const uchar*, const uchar*, const uchar*, int, short*, short*, short*,
-                           short*, short*);
+                            short*, short*);
 
 template <bool kFirst>
 void SobelRow(const uchar* above, const uchar* centre, const uchar* below, int cols, short* s,

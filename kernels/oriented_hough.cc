@@ -21,10 +21,10 @@ constexpr int kShift = 16;    // Fixed-point bits of the minor coordinate when f
 
 // A pixel's state while lines are drawn.
 enum PixelState : uint8_t {
-  kNone = 0,    // Not an edge, or removed with a line.
-  kWaiting = 1, // An edge pixel not drawn yet (holds no votes).
-  kVoted = 2,   // Drawn: its votes are in the accumulator.
-  kGoneVoted = 3, // Removed on the way of a line too short to keep, its votes still in (as PPHT).
+  kNone = 0,       // Not an edge, or removed with a line.
+  kWaiting = 1,    // An edge pixel not drawn yet (holds no votes).
+  kVoted = 2,      // Drawn: its votes are in the accumulator.
+  kGoneVoted = 3,  // Removed on the way of a line too short to keep, its votes still in (as PPHT).
 };
 
 // The (angle, rho) vote counts, reused by the calls of one thread and emptied at the end of
@@ -128,7 +128,7 @@ class Accumulator {
 
   int window_ = 0;
   int width_ = -1, height_ = -1;  // The map the rows are laid out for.
-  std::vector<int16_t> votes_;  // A bin holds at most the pixels of one line: far below 2^15.
+  std::vector<int16_t> votes_;    // A bin holds at most the pixels of one line: far below 2^15.
   // Angle tables three times over, so that a window is contiguous wherever it wraps.
   float cos_[3 * kAngles], sin_[3 * kAngles];
   int row_[3 * kAngles] = {};  // Index of (angle, rho 0) in votes_.
@@ -138,10 +138,10 @@ class Accumulator {
 // Per-thread scratch of OrientedHoughSegments.
 struct HoughScratch {
   Accumulator accumulator;
-  cv::Mat state, bins;          // PixelState and gradient bin of every pixel.
-  std::vector<cv::Point> pool;   // Edge pixels in raster order.
+  cv::Mat state, bins;                 // PixelState and gradient bin of every pixel.
+  std::vector<cv::Point> pool;         // Edge pixels in raster order.
   std::vector<uint64_t> keys, sorted;  // DrawOrder's keys and radix buffer.
-  std::vector<cv::Point> drawn;  // The edge pixels in the order they are drawn.
+  std::vector<cv::Point> drawn;        // The edge pixels in the order they are drawn.
 };
 
 // A pseudo-random 16-bit rank of pixel (u, v): a multiply-xorshift hash of its coordinates.
@@ -189,9 +189,9 @@ int GradientBin(short gx, short gy) {
 // Steps along the line of normal angle n from (u, v), one pixel along its major axis at a time,
 // the minor coordinate in fixed point: the same pixels in both passes.
 struct LineWalker {
-  bool along_u;     // True when the line is closer to horizontal: u steps by +-1.
-  int u0, v0;       // Start, the minor coordinate shifted by kShift (plus a half).
-  int du, dv;       // Step of the first direction (the second is its negation).
+  bool along_u;  // True when the line is closer to horizontal: u steps by +-1.
+  int u0, v0;    // Start, the minor coordinate shifted by kShift (plus a half).
+  int du, dv;    // Step of the first direction (the second is its negation).
 
   LineWalker(int u, int v, float direction_u, float direction_v) {
     along_u = std::abs(direction_u) > std::abs(direction_v);
@@ -230,7 +230,8 @@ void OrientedHoughSegments(const cv::Mat& edges, const cv::Mat& dx, const cv::Ma
   // the loops it reaches, and in a shared object (the Python module) each such use is a
   // __tls_get_addr call (about 6% of a frame's instructions).
   HoughScratch* scratch_address = &thread_scratch;
-  asm("" : "+r"(scratch_address));
+  asm(""
+      : "+r"(scratch_address));
   HoughScratch& scratch = *scratch_address;
   Accumulator& accumulator = scratch.accumulator;
   accumulator.Reset(width, height, window);

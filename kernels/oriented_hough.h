@@ -7,9 +7,9 @@
 namespace corridor {
 
 struct OrientedHoughOptions {
-  int threshold = 25;             // Votes a line needs before it is followed.
-  double min_length = 10;         // Shortest segment kept, px (along u or v, as cv::HoughLinesP).
-  double max_gap = 6;             // Largest gap bridged inside one segment, px.
+  int threshold = 25;              // Votes a line needs before it is followed.
+  double min_length = 10;          // Shortest segment kept, px (along u or v, as cv::HoughLinesP).
+  double max_gap = 6;              // Largest gap bridged inside one segment, px.
   double angle_window_deg = 15.0;  // Each edge pixel votes only for line normals this close to its gradient's direction.
 };
 

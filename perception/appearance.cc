@@ -102,7 +102,7 @@ double BoundaryScore(const cv::Mat& bgr, const FloorAppearance& floor, const Mer
   const Eigen::Vector2d normal = line.line.head<2>();  // Points down (toward the floor).
   const int samples = 24;
   const int spacing = std::max(1, scale);  // Patch pixel spacing, px.
-  const double offset = 4.0 * spacing;  // Strip distance from the line, px.
+  const double offset = 4.0 * spacing;     // Strip distance from the line, px.
   // The 3x3 patches on each side of every usable sample: 9 above, then 9 below.
   std::vector<cv::Vec3b> patches;
   patches.reserve(samples * 18);

@@ -11,8 +11,8 @@ namespace corridor {
 // The floor's appearance: a reference colour sampled where almost every corridor photo shows
 // floor (the bottom centre of the image), in 8-bit CIE Lab (OpenCV's scaling).
 struct FloorAppearance {
-  cv::Vec3f lab;      // Median Lab colour of the reference patch.
-  float spread = 1;   // Median distance of the patch's pixels to it (texture), >= 1.
+  cv::Vec3f lab;     // Median Lab colour of the reference patch.
+  float spread = 1;  // Median distance of the patch's pixels to it (texture), >= 1.
 };
 
 // Distance of two 8-bit Lab colours (OpenCV's scaling) with lightness weighted a quarter: shading,

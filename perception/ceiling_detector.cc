@@ -20,10 +20,10 @@ namespace {
 // The pixels of every searched line: for each height, the left then the right ceiling/wall
 // junction, each as `samples` points evenly spaced in inverse distance along the corridor.
 struct SearchLines {
-  std::vector<double> heights;  // The searched ceiling heights, m.
-  int samples = 0;              // Points per line.
+  std::vector<double> heights;    // The searched ceiling heights, m.
+  int samples = 0;                // Points per line.
   std::vector<cv::Point> pixels;  // [(height * 2 + side) * samples + i]; x = -1 where not visible.
-  int top = 0, bottom = -1;     // Rows spanned by the visible pixels (bottom < top: none).
+  int top = 0, bottom = -1;       // Rows spanned by the visible pixels (bottom < top: none).
 
   const cv::Point* Line(size_t height, int side) const {
     return pixels.data() + (2 * height + side) * samples;
@@ -183,7 +183,8 @@ Status DetectCeiling(const cv::Mat& bgr, const Camera& camera, const CorridorGeo
   // Its address opaque to the optimiser, so that a shared object does not call __tls_get_addr at
   // each use (see OrientedHoughSegments).
   SearchLines* lines_address = &thread_lines;
-  asm("" : "+r"(lines_address));
+  asm(""
+      : "+r"(lines_address));
   SearchLines& lines = *lines_address;
   lines.heights.clear();  // ProjectSearchLines sets the rest.
   ProjectSearchLines(camera, g, o, &lines);

@@ -157,13 +157,15 @@ bool EndWallDetectorOptions::Check(std::string* why) const {
   std::string reason;
   if (!(near_distance > 0 && far_distance > near_distance) || (candidates != 0 && candidates < 10) ||
       samples < 18) {
-    reason = "end wall search needs 0 < near_distance < far_distance, 0 (automatic) or >= 10 "
-             "candidates and >= 18 samples";
+    reason =
+        "end wall search needs 0 < near_distance < far_distance, 0 (automatic) or >= 10 "
+        "candidates and >= 18 samples";
   } else if (!(min_support > 0 && min_support <= 1) || !(max_beyond >= 0 && max_beyond < 1) ||
              !(min_before >= 0 && min_before <= 1) || !(min_corner >= 0 && min_corner <= 1) ||
              !(min_contrast >= 0)) {
-    reason = "end wall: min_support in (0, 1], max_beyond in [0, 1), min_before and min_corner "
-             "in [0, 1], min_contrast >= 0";
+    reason =
+        "end wall: min_support in (0, 1], max_beyond in [0, 1), min_before and min_corner "
+        "in [0, 1], min_contrast >= 0";
   } else if (!(min_span >= 0 && min_span < 1) || reach_px < 1 || reach_px > 5 ||
              max_work_width < 64) {
     reason = "end wall: min_span must be in [0, 1), reach_px in [1, 5], max_work_width >= 64";

@@ -36,14 +36,14 @@ struct EndWallDetectorOptions {
 };
 
 struct EndWallEstimate {
-  bool found = false;        // True when an end wall was seen.
-  double distance = 0;       // Its Z_W, m along the corridor from the camera (valid when found).
-  double support = 0;        // The second-best third's fraction of the floor/end-wall line on edges.
-  double beyond = 0;         // The cleaner junction's fraction on edges just beyond the wall.
-  double corner = 0;         // The corners' largest fraction on edges.
-  double before = 0;         // The junctions' largest fraction on edges just before the wall.
-  int points = 0;            // Edge pixels whose rays gave the robust (median) distance.
-  std::string reason;        // Why nothing was found.
+  bool found = false;   // True when an end wall was seen.
+  double distance = 0;  // Its Z_W, m along the corridor from the camera (valid when found).
+  double support = 0;   // The second-best third's fraction of the floor/end-wall line on edges.
+  double beyond = 0;    // The cleaner junction's fraction on edges just beyond the wall.
+  double corner = 0;    // The corners' largest fraction on edges.
+  double before = 0;    // The junctions' largest fraction on edges just before the wall.
+  int points = 0;       // Edge pixels whose rays gave the robust (median) distance.
+  std::string reason;   // Why nothing was found.
 };
 
 // Searches the end wall's distance; then each edge pixel near the chosen floor/end-wall line

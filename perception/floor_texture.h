@@ -14,9 +14,9 @@ struct GradientGrid {
 
 // What is counted (see MeasureFloorTexture).
 struct FloorTextureOptions {
-  double margin = 3.0;              // Floor pixels lie this far below both junctions and the vanishing point's row, image px.
-  int strong = 240;                 // A strong edge: colour |dx| + |dy| (Sobel 3x3) at least this.
-  double line_tolerance_deg = 15;   // Edges within this of horizontal, vertical or the direction to the vanishing point are corridor lines.
+  double margin = 3.0;             // Floor pixels lie this far below both junctions and the vanishing point's row, image px.
+  int strong = 240;                // A strong edge: colour |dx| + |dy| (Sobel 3x3) at least this.
+  double line_tolerance_deg = 15;  // Edges within this of horizontal, vertical or the direction to the vanishing point are corridor lines.
 };
 
 // How much of the floor is strong edges that no corridor line explains. A corridor floor is one

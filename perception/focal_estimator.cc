@@ -30,11 +30,11 @@ double FocalOfHfov(int width, double hfov_deg) {
 
 // Where the vanishing points may be and how lines meet them.
 struct FocalSearch {
-  Eigen::Vector2d centre;          // Principal point, px.
-  double inlier_distance = 1.5;    // px, see FocalEstimatorOptions::inlier_distance_px.
-  double robust_scale = 0.3;       // px, see FocalEstimatorOptions::robust_scale_px.
-  bool zero_roll = true;           // See FocalEstimatorOptions::assume_zero_roll.
-  int pairs = 3000;                // Line pairs per RANSAC.
+  Eigen::Vector2d centre;               // Principal point, px.
+  double inlier_distance = 1.5;         // px, see FocalEstimatorOptions::inlier_distance_px.
+  double robust_scale = 0.3;            // px, see FocalEstimatorOptions::robust_scale_px.
+  bool zero_roll = true;                // See FocalEstimatorOptions::assume_zero_roll.
+  int pairs = 3000;                     // Line pairs per RANSAC.
   double min_focal = 0, max_focal = 0;  // Plausible focal lengths, px.
 };
 
@@ -117,7 +117,7 @@ bool FindCorridorVp(const std::vector<ImageLine>& lines, const FocalSearch& sear
 // The corridor's frame seen by the camera: P_C = R P_W with R = R_z(roll) R_x(pitch) R_y(yaw)
 // (docs/geometry.md, plus a roll), and the focal length that images it.
 struct ManhattanFrame {
-  double focal = 0;                    // px.
+  double focal = 0;                     // px.
   double pitch = 0, yaw = 0, roll = 0;  // rad.
 };
 
@@ -285,7 +285,8 @@ void RefineFrame(const std::vector<ImageLine>& lines, const FocalSearch& search,
         Eigen::Vector4d h = Eigen::Vector4d::Zero();
         h(p) = 1e-6;
         jacobian.col(p) = (Residuals(lines, family, weight, Moved(*frame, h), search.centre) -
-                           Residuals(lines, family, weight, Moved(*frame, -h), search.centre)) / 2e-6;
+                           Residuals(lines, family, weight, Moved(*frame, -h), search.centre)) /
+                          2e-6;
       }
       const Eigen::MatrixXd normal = jacobian.transpose() * jacobian;
       const Eigen::VectorXd gradient = jacobian.transpose() * r;

@@ -41,16 +41,16 @@ struct FocalEstimatorOptions {
 
 // What EstimateFocal found. Vanishing points are in pixels; the principal point is the centre.
 struct FocalEstimate {
-  double focal_px = 0;                // fx = fy, pixels.
-  bool from_vanishing_points = false; // False: `focal_px` is the fallback field of view's.
-  std::string how;                    // E.g. "vanishing points (corridor + across + vertical)", or why it fell back.
-  Eigen::Vector2d corridor_vp{0, 0};  // The corridor axis' vanishing point (when corridor_support > 0).
-  Eigen::Vector2d second_vp{0, 0};    // The orthogonal vanishing point nearest the centre (when second_support > 0).
-  std::string second_family;          // "across" or "vertical": the lines through second_vp.
-  int corridor_support = 0;           // Lines through corridor_vp.
-  int second_support = 0;             // Lines through second_vp.
-  int third_support = 0;              // Lines through the third (orthogonal to both) vanishing point.
-  double rms_px = 0;                  // RMS distance of the supporting lines' endpoints from their vanishing points' lines, px.
+  double focal_px = 0;                 // fx = fy, pixels.
+  bool from_vanishing_points = false;  // False: `focal_px` is the fallback field of view's.
+  std::string how;                     // E.g. "vanishing points (corridor + across + vertical)", or why it fell back.
+  Eigen::Vector2d corridor_vp{0, 0};   // The corridor axis' vanishing point (when corridor_support > 0).
+  Eigen::Vector2d second_vp{0, 0};     // The orthogonal vanishing point nearest the centre (when second_support > 0).
+  std::string second_family;           // "across" or "vertical": the lines through second_vp.
+  int corridor_support = 0;            // Lines through corridor_vp.
+  int second_support = 0;              // Lines through second_vp.
+  int third_support = 0;               // Lines through the third (orthogonal to both) vanishing point.
+  double rms_px = 0;                   // RMS distance of the supporting lines' endpoints from their vanishing points' lines, px.
 };
 
 // Estimates the focal length (square pixels, principal point at the image centre) from the

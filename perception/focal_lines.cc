@@ -144,7 +144,7 @@ bool RefitSubpixel(const cv::Mat& dx, const cv::Mat& dy, double reach, MergedLin
 std::vector<ImageLine> FindFocalLines(const cv::Mat& color, const FocalEstimatorOptions& o) {
   const double diagonal = std::hypot(color.cols, color.rows);
   const SegmentOptions segment_options{
-      o.blur_sigma,     0.0, o.canny_low_ratio, o.canny_auto_percentile, o.canny_auto_min,
+      o.blur_sigma, 0.0, o.canny_low_ratio, o.canny_auto_percentile, o.canny_auto_min,
       o.hough_threshold, std::max(6.0, o.hough_min_length_fraction * diagonal), o.hough_max_gap,
       0.0};
   const EdgeSegments found = DetectSegments(color, 0, segment_options);

@@ -17,7 +17,7 @@ struct ImageLine {
   Eigen::Vector3d a, b, mid;
   Eigen::Vector3d through;  // a x b: the line through the endpoints, unnormalised.
   Eigen::Vector3d line;     // a u + b v + c = 0 with a^2 + b^2 = 1.
-  double length = 0;     // px.
+  double length = 0;        // px.
 };
 
 // Whole-image segments (perception/line_segments.h), merged, refit on sub-pixel gradient peaks

@@ -21,7 +21,7 @@
 namespace corridor {
 namespace {
 
-constexpr int kMinImageSide = 24;  // Smaller images cannot show a corridor.
+constexpr int kMinImageSide = 24;      // Smaller images cannot show a corridor.
 constexpr long kMinFloorPixels = 200;  // Fewer floor pixels (working resolution) are too few to judge its texture.
 
 // The points of `from` for which keep(p) holds, in order, into *to. Every point is written and
@@ -42,9 +42,11 @@ void KeepWhere(const std::vector<Eigen::Vector2d>& from, Keep keep,
 // The pixels of `side` within `distance` of the line, in order.
 void SupportPixels(const std::vector<Eigen::Vector2d>& side, const Eigen::Vector3d& line,
                    double distance, std::vector<Eigen::Vector2d>* support) {
-  KeepWhere(side, [&](const Eigen::Vector2d& p) {
-    return !(std::abs(line.dot(p.homogeneous())) > distance);
-  }, support);
+  KeepWhere(
+      side, [&](const Eigen::Vector2d& p) {
+        return !(std::abs(line.dot(p.homogeneous())) > distance);
+      },
+      support);
 }
 
 // The final JunctionLine: refit on nearby edge pixels, extent and confidence.
@@ -55,7 +57,7 @@ JunctionLine Refine(const JunctionCandidate& candidate, const std::vector<Eigen:
   Eigen::Vector3d line = candidate.line.line;
   const std::vector<Eigen::Vector2d> side = FloorSidePixels(edges, vp, left);
   std::vector<Eigen::Vector2d> support, fitted;  // `fitted`: the pixels `line` was fitted to.
-  bool final_support = false;  // True once `support` is the final (distance, line) support.
+  bool final_support = false;                    // True once `support` is the final (distance, line) support.
   for (int round = 0; round < 3; ++round) {
     SupportPixels(side, line, round == 0 ? 2 * distance : distance, &support);
     // The same pixels give the same fit (FitLineLeastDistance is deterministic): the line has
@@ -145,7 +147,7 @@ void KeepSingleJunction(const std::vector<JunctionCandidate>& side, bool is_left
   const Eigen::Vector2d origin = -l.z() * l.head<2>();
   const double far_t = (result->single.far_end - origin).dot(direction);
   const double near_t = (result->single.near_end - origin).dot(direction);
-  const double up = far_t < near_t ? -1.0 : 1.0;  // Sign of t toward the far end.
+  const double up = far_t < near_t ? -1.0 : 1.0;     // Sign of t toward the far end.
   std::vector<std::pair<double, double>> crossings;  // (t, weight)
   double total = 0;
   for (const MergedLine& other : lines) {
@@ -186,10 +188,12 @@ Status NoCorridor(JunctionPair* result, const std::string& why) {
 std::vector<Eigen::Vector2d> FloorSidePixels(const std::vector<Eigen::Vector2d>& edges,
                                              const Eigen::Vector2d& vp, bool left) {
   std::vector<Eigen::Vector2d> side;
-  KeepWhere(edges, [&](const Eigen::Vector2d& p) {
-    const bool beyond = left ? p.x() > vp.x() : p.x() < vp.x();
-    return !beyond & !(p.y() < vp.y());
-  }, &side);
+  KeepWhere(
+      edges, [&](const Eigen::Vector2d& p) {
+        const bool beyond = left ? p.x() > vp.x() : p.x() < vp.x();
+        return !beyond & !(p.y() < vp.y());
+      },
+      &side);
   return side;
 }
 
@@ -211,9 +215,10 @@ bool JunctionDetectorOptions::Check(std::string* why) const {
              !(relaxed_hough_min_length_fraction > 0 && relaxed_hough_min_length_fraction < 1) ||
              !(relaxed_min_line_fraction >= 0 && relaxed_min_line_fraction < 1) ||
              !(relaxed_min_partner_boundary >= 0 && relaxed_min_partner_boundary <= 1)) {
-    reason = "relaxed_hough_threshold must be >= 0 (0 = no second look), "
-             "relaxed_hough_min_length_fraction in (0, 1), relaxed_min_line_fraction in [0, 1) "
-             "and relaxed_min_partner_boundary in [0, 1]";
+    reason =
+        "relaxed_hough_threshold must be >= 0 (0 = no second look), "
+        "relaxed_hough_min_length_fraction in (0, 1), relaxed_min_line_fraction in [0, 1) "
+        "and relaxed_min_partner_boundary in [0, 1]";
   } else if (!(hough_max_gap >= 0)) {
     reason = "hough_max_gap must be >= 0";
   } else if (!(hough_angle_window_deg >= 0 && hough_angle_window_deg < 90)) {
@@ -233,8 +238,9 @@ bool JunctionDetectorOptions::Check(std::string* why) const {
     reason = "max_edge_density must be in (0, 1]";
   } else if (!(max_floor_texture >= 0 && max_floor_texture <= 1) || strong_edge_gradient < 1 ||
              !(floor_line_tolerance_deg >= 0 && floor_line_tolerance_deg < 45)) {
-    reason = "max_floor_texture must be in [0, 1] (0 = no check), strong_edge_gradient >= 1, "
-             "floor_line_tolerance_deg in [0, 45)";
+    reason =
+        "max_floor_texture must be in [0, 1] (0 = no check), strong_edge_gradient >= 1, "
+        "floor_line_tolerance_deg in [0, 45)";
   } else if (max_work_width != 0 && max_work_width < 2 * kMinImageSide) {
     reason = "max_work_width must be 0 (full resolution) or at least " +
              std::to_string(2 * kMinImageSide) + " px";
@@ -307,8 +313,9 @@ Status DetectJunctionsIn(const cv::Mat& bgr, const cv::Mat* halved,
     cv::Size size(width, height);
     for (int s = 1; s < scale; s *= 2) size = cv::Size((size.width + 1) / 2, (size.height + 1) / 2);
     if (halved->size() != size || halved->type() != CV_8UC3) {
-      return Status::InvalidArgument("junction detector: the halved image is not the image's "
-                                     "pyrDown to max_work_width");
+      return Status::InvalidArgument(
+          "junction detector: the halved image is not the image's "
+          "pyrDown to max_work_width");
     }
     crop_top = 0;
     work = *halved;

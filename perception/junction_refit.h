@@ -7,10 +7,10 @@
 namespace corridor {
 
 struct JunctionRefitOptions {
-  double reach_px = 4;          // Edge points are sought this far from the coarse line, px (either side).
-  double threshold = 40;        // Least colour gradient across the line (Sobel 3x3, the strongest channel) of an edge point.
+  double reach_px = 4;             // Edge points are sought this far from the coarse line, px (either side).
+  double threshold = 40;           // Least colour gradient across the line (Sobel 3x3, the strongest channel) of an edge point.
   double support_distance_px = 2;  // Points this close to a fit are kept for the next fit, px.
-  int step_px = 1;              // An edge point is sought on every this many rows (columns).
+  int step_px = 1;                 // An edge point is sought on every this many rows (columns).
 };
 
 // Refits a junction found at a coarser working resolution on the full-resolution image `bgr`

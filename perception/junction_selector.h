@@ -11,15 +11,15 @@ namespace corridor {
 
 // A candidate junction with its cues.
 struct JunctionCandidate {
-  MergedLine line;        // The merged line.
-  double boundary = 0;    // BoundaryScore in [0, 1]: floor below, something else above.
+  MergedLine line;      // The merged line.
+  double boundary = 0;  // BoundaryScore in [0, 1]: floor below, something else above.
 };
 
 // The chosen pair and why.
 struct SelectedPair {
   int left = -1, right = -1;  // Indices into the candidate lists; -1 when none.
   Eigen::Vector2d vanishing_point = Eigen::Vector2d::Zero();
-  double score = 0;           // The pair's score.
+  double score = 0;  // The pair's score.
   // Per side, a line below the chosen one (within 12 degrees, through the same vanishing point, on
   // the floor side, with at least half its boundary score within 6 degrees, 0.4 of it beyond)
   // that the baseboard rule did not take: the junction if the chosen line is a baseboard top, or
@@ -32,8 +32,8 @@ struct BaseboardBandTest {
   // How unlike the floor below it the band between `upper` and `lower` looks (BandContrast);
   // empty: no band test.
   std::function<double(const MergedLine& upper, const MergedLine& lower)> contrast;
-  double min_contrast = 1.45;        // At least this: the band is a baseboard, the partner the junction.
-  double min_boundary_ratio = 0.3;   // Partners with less of the chosen line's boundary score are not tried.
+  double min_contrast = 1.45;       // At least this: the band is a baseboard, the partner the junction.
+  double min_boundary_ratio = 0.3;  // Partners with less of the chosen line's boundary score are not tried.
 };
 
 // Scores every (left, right) pair: both lines' support lengths and boundary scores, plus the

@@ -309,8 +309,9 @@ bool TrackJunctions(const cv::Mat& bgr, const JunctionPair& previous,
   const SelectedPair pair = SelectJunctionPair(judged[0], judged[1], all_lines,
                                                Eigen::Vector2d(bgr.cols, height), band);
   if (pair.left < 0) {
-    return fail("no pair of lines near the previous junctions meets at a vanishing point above "
-                "the floor");
+    return fail(
+        "no pair of lines near the previous junctions meets at a vanishing point above "
+        "the floor");
   }
   if (pair.left_lower >= 0 || pair.right_lower >= 0) {
     return fail("a junction near the previous one has a lower alternative");

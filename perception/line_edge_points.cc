@@ -54,7 +54,7 @@ void GradientsAcross(const cv::Mat& bgr, bool by_rows, int major, int first, int
 }  // namespace
 
 int EdgePeaksAlong(const cv::Mat& bgr, const Eigen::Vector3d& line, double t0, double t1,
-                    const EdgePeakSearch& search, std::vector<EdgePeak>* peaks) {
+                   const EdgePeakSearch& search, std::vector<EdgePeak>* peaks) {
   if (bgr.empty() || bgr.type() != CV_8UC3) return 0;
   const Eigen::Vector2d n = line.head<2>();
   const Eigen::Vector2d direction(line.y(), -line.x());

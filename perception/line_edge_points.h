@@ -10,16 +10,16 @@ namespace corridor {
 // A point near a line where the colour gradient across the line peaks.
 struct EdgePeak {
   Eigen::Vector2d point = Eigen::Vector2d::Zero();  // Where, px (to a tenth of a pixel across the line).
-  int major = 0;          // The row (column, for a line flatter than 45 degrees) it was sought on.
-  double offset = 0;      // Its signed distance from the line along that row (column), px.
-  double strength = 0;    // The gradient across the line there.
+  int major = 0;                                    // The row (column, for a line flatter than 45 degrees) it was sought on.
+  double offset = 0;                                // Its signed distance from the line along that row (column), px.
+  double strength = 0;                              // The gradient across the line there.
 };
 
 // How EdgePeaksAlong looks for the peaks.
 struct EdgePeakSearch {
-  double reach_px = 4;     // Peaks are sought this far from the line along each row (column), px, either side.
-  double threshold = 40;   // Least colour gradient across the line (Sobel 3x3, the strongest channel) of a peak.
-  int step_px = 1;         // Peaks are sought on every this many rows (columns).
+  double reach_px = 4;       // Peaks are sought this far from the line along each row (column), px, either side.
+  double threshold = 40;     // Least colour gradient across the line (Sobel 3x3, the strongest channel) of a peak.
+  int step_px = 1;           // Peaks are sought on every this many rows (columns).
   bool nearest_only = true;  // Keep only the peak nearest the line on each row (column); else all of them.
 };
 
@@ -38,7 +38,7 @@ inline bool CrossedByRows(const Eigen::Vector3d& line) {
 // leaves the image are skipped. Appended to *peaks in row (column) order. Returns the number of
 // rows (columns) searched.
 int EdgePeaksAlong(const cv::Mat& bgr, const Eigen::Vector3d& line, double t0, double t1,
-                    const EdgePeakSearch& search, std::vector<EdgePeak>* peaks);
+                   const EdgePeakSearch& search, std::vector<EdgePeak>* peaks);
 
 // The position along `line`'s direction (b, -a) of the point p, from the line's point nearest the
 // origin (EdgePeaksAlong's t).

@@ -10,13 +10,13 @@ namespace corridor {
 // A straight line found in the image: several collinear Hough segments merged (the paper's NMS)
 // into one, in full-image pixel coordinates.
 struct MergedLine {
-  Eigen::Vector3d line;       // a u + b v + c = 0, a^2 + b^2 = 1, with b >= 0 (normal points down).
-  Eigen::Vector2d start;      // Extent of its segments along the line: the end with smaller u.
-  Eigen::Vector2d end;        // The end with larger u.
-  double length = 0;          // Extent, px.
-  double covered = 0;         // Summed length of its segments, px (<= length when broken).
-  double slope = 0;           // dv/du (< 0 rises to the right: a left junction).
-  double inclination_deg = 0; // Angle from the horizontal, in [0, 90].
+  Eigen::Vector3d line;        // a u + b v + c = 0, a^2 + b^2 = 1, with b >= 0 (normal points down).
+  Eigen::Vector2d start;       // Extent of its segments along the line: the end with smaller u.
+  Eigen::Vector2d end;         // The end with larger u.
+  double length = 0;           // Extent, px.
+  double covered = 0;          // Summed length of its segments, px (<= length when broken).
+  double slope = 0;            // dv/du (< 0 rises to the right: a left junction).
+  double inclination_deg = 0;  // Angle from the horizontal, in [0, 90].
 };
 
 // Fills m's start, end, length, slope and inclination from `points` projected onto m->line (which
@@ -25,22 +25,22 @@ void SetExtentAlongLine(const std::vector<Eigen::Vector2d>& points, MergedLine* 
 
 // Canny edges (in the ROI rows [roi_top, rows)) and their Hough segments in full-image coordinates.
 struct EdgeSegments {
-  cv::Mat edges;                   // CV_8U edge map of the ROI (255 = edge).
-  int roi_top = 0;                 // First image row of the ROI.
-  double canny_high = 0;           // The Canny high threshold used.
-  std::vector<cv::Vec4f> segments; // (u0, v0, u1, v1) in full-image coordinates.
-  cv::Mat dx, dy;                  // CV_16S colour gradient of the (blurred) ROI: Canny's input.
+  cv::Mat edges;                    // CV_8U edge map of the ROI (255 = edge).
+  int roi_top = 0;                  // First image row of the ROI.
+  double canny_high = 0;            // The Canny high threshold used.
+  std::vector<cv::Vec4f> segments;  // (u0, v0, u1, v1) in full-image coordinates.
+  cv::Mat dx, dy;                   // CV_16S colour gradient of the (blurred) ROI: Canny's input.
 };
 
 struct SegmentOptions {
-  double blur_sigma;         // Gaussian blur before Canny, px.
-  double canny_high;         // Canny high threshold on |dx| + |dy|; 0 = automatic.
-  double canny_low_ratio;    // Low threshold = ratio * high.
-  double auto_percentile;    // Automatic high threshold: this percentile of the gradients...
-  double auto_min;           // ... but at least this.
-  int hough_threshold;       // Hough votes.
-  double hough_min_length;   // Shortest segment, px.
-  double hough_max_gap;      // Largest gap, px.
+  double blur_sigma;              // Gaussian blur before Canny, px.
+  double canny_high;              // Canny high threshold on |dx| + |dy|; 0 = automatic.
+  double canny_low_ratio;         // Low threshold = ratio * high.
+  double auto_percentile;         // Automatic high threshold: this percentile of the gradients...
+  double auto_min;                // ... but at least this.
+  int hough_threshold;            // Hough votes.
+  double hough_min_length;        // Shortest segment, px.
+  double hough_max_gap;           // Largest gap, px.
   double hough_angle_window_deg;  // > 0: OrientedHoughSegments, each edge pixel voting within this of its gradient's direction; 0: cv::HoughLinesP.
 };
 

@@ -27,9 +27,9 @@ int OrientationBin(int gx, int gy);
 
 // Canny edges of the colour gradient on the image rows [top, bottom), each with its orientation.
 struct OrientedEdges {
-  int top = 0;      // First image row of the band.
-  cv::Mat edges;    // CV_8U, 255 = edge (band rows).
-  cv::Mat near;     // CV_8U: bit b set where an edge of orientation bin b lies within 1 px.
+  int top = 0;    // First image row of the band.
+  cv::Mat edges;  // CV_8U, 255 = edge (band rows).
+  cv::Mat near;   // CV_8U: bit b set where an edge of orientation bin b lies within 1 px.
 };
 
 // ColorCannyEdges of an image's rows from the top down, computed once for every search of a frame

@@ -41,7 +41,9 @@ struct Columns {
 };
 
 // Weight of a point at distance d: 1 (the unweighted fit), Huber's, or L1's.
-enum class Weight { kOne, kHuberWeight, kL1 };
+enum class Weight { kOne,
+                    kHuberWeight,
+                    kL1 };
 
 template <Weight kWeight>
 inline double WeightOf(double d) {

@@ -70,10 +70,14 @@ void PyrDown(const cv::Mat& image, cv::Mat* halved) {
 #ifdef CORRIDOR_AVX2_VARIANTS
   if (CpuHasAvx2() && image.depth() == CV_8U && image.cols >= 3 && image.rows >= 3) {
     switch (image.channels()) {
-      case 1: return PyrDownAvx2<1>(image, halved);
-      case 3: return PyrDownAvx2<3>(image, halved);
-      case 4: return PyrDownAvx2<4>(image, halved);
-      default: break;
+      case 1:
+        return PyrDownAvx2<1>(image, halved);
+      case 3:
+        return PyrDownAvx2<3>(image, halved);
+      case 4:
+        return PyrDownAvx2<4>(image, halved);
+      default:
+        break;
     }
   }
 #endif

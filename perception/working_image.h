@@ -8,9 +8,9 @@ namespace corridor {
 
 // An image searched at a lower resolution, with the camera that matches it.
 struct WorkingImage {
-  cv::Mat bgr;     // The image halved (PyrDown) until it fits; the input's own pixels if not.
-  Camera camera;   // The input camera scaled to bgr: f halved, principal point moved to match.
-  int scale = 1;   // Input pixels per working pixel: 2 to the number of halvings.
+  cv::Mat bgr;    // The image halved (PyrDown) until it fits; the input's own pixels if not.
+  Camera camera;  // The input camera scaled to bgr: f halved, principal point moved to match.
+  int scale = 1;  // Input pixels per working pixel: 2 to the number of halvings.
 };
 
 // cv::pyrDown(image, *halved) with the default size and border: the same pixels, computed about

@@ -11,11 +11,15 @@ namespace corridor {
 
 // Which surface of the box model a ray meets first (docs/geometry.md s3 and s6, plus the end wall
 // when known), for the per-pixel masks. The exact rasteriser has its own vectorised row loop.
-enum class BoxSurface { kNone, kFloor, kWall, kCeiling, kEndWall };
+enum class BoxSurface { kNone,
+                        kFloor,
+                        kWall,
+                        kCeiling,
+                        kEndWall };
 
 struct BoxHit {
-  BoxSurface surface = BoxSurface::kNone;                  // The first surface met.
-  double z = std::numeric_limits<double>::infinity();      // Its depth along the ray (camera z).
+  BoxSurface surface = BoxSurface::kNone;              // The first surface met.
+  double z = std::numeric_limits<double>::infinity();  // Its depth along the ray (camera z).
 };
 
 // The box's normals and axis in the camera frame, computed once per geometry.

@@ -34,7 +34,7 @@ int64_t FramePipeline::Run(const Source& source, const Sink& sink) {
     if (stopped) continue;  // Drain so that the extraction thread can finish.
     if (frame->result.ReadyToReconstruct() && frame->camera != nullptr) {
       recoverer_.Reconstruct(*frame->camera, &frame->result,
-                            sequence_ ? prior.Previous() : nullptr);
+                             sequence_ ? prior.Previous() : nullptr);
       prior.Update(frame->result);
     }
     ++delivered;

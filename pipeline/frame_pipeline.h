@@ -12,14 +12,14 @@ namespace corridor {
 
 // One frame flowing through the pipeline.
 struct PipelineFrame {
-  int64_t index = 0;            // Position in the input order (set by the pipeline).
-  std::string name;             // The frame's name, for outputs and messages.
-  int64_t stamp_ns = -1;        // Capture time, ns since the epoch (a ROS bag message's); -1 = none.
-  const Camera* camera = nullptr;  // Its camera; must outlive the run (or be owned_camera).
+  int64_t index = 0;                           // Position in the input order (set by the pipeline).
+  std::string name;                            // The frame's name, for outputs and messages.
+  int64_t stamp_ns = -1;                       // Capture time, ns since the epoch (a ROS bag message's); -1 = none.
+  const Camera* camera = nullptr;              // Its camera; must outlive the run (or be owned_camera).
   std::shared_ptr<const Camera> owned_camera;  // A camera made for this frame alone (its size's).
-  cv::Mat image;                // The image; may be empty when reading failed.
-  Status read_status;           // Why the image could not be read (the frame then fails).
-  RecoverDepthResult result;    // Filled by the pipeline.
+  cv::Mat image;                               // The image; may be empty when reading failed.
+  Status read_status;                          // Why the image could not be read (the frame then fails).
+  RecoverDepthResult result;                   // Filled by the pipeline.
 };
 
 // The paper's two threads (section III-A, Fig. 1): an edge-extraction thread reads frames and

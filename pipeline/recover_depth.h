@@ -25,41 +25,41 @@ namespace corridor {
 
 // Everything RecoverDepth can be told. The defaults just work on a calibrated corridor image.
 struct RecoverDepthOptions {
-  std::string solver = "joint";            // Solver name or chain (grid, closed_form, lm, joint, ...).
-  std::string rasterizer = "exact";        // Rasteriser name: exact or paper.
-  JunctionDetectorOptions perception;      // Junction-line detection (paper III-A).
-  bool track_junctions = true;             // In a sequence (Detect given a JunctionTrack), seek each junction near the previous frame's first.
-  JunctionTrackerOptions tracker;          // That tracking's options.
-  SolverOptions solver_options;            // Options of every solver.
-  RasterizerOptions rasterizer_options;    // Options of every rasteriser.
-  int points_per_line = 30;                // N: points sampled along each junction (paper III-B).
-  double min_width = 0.5;                  // Narrower estimates are implausible, m.
-  double max_width = 20.0;                 // Wider estimates are implausible, m.
-  double max_abs_yaw = 1.2;                // |yaw| above this is implausible, rad (~69 deg).
-  double max_abs_pitch = 0.8;              // |pitch| above this is implausible, rad (~46 deg).
-  double max_line_error = 0.01;            // RMS distance of the junction points to the lines the
-                                           // estimate predicts, over the image diagonal; more is
-                                           // implausible (e.g. a solver stopped at a bound).
-  double ceiling_height = 0.0;             // Known ceiling height above the floor, m (0 = estimate or none).
-  bool estimate_ceiling = true;            // Without a known height, look for the ceiling/wall junctions.
-  CeilingDetectorOptions ceiling;          // Ceiling-height search (beyond the paper).
-  bool ceiling_checks_baseboards = true;   // Where a baseboard gave two parallel lines and the upper one was taken, take the lower one when it makes both ceiling junctions agree.
-  bool ceiling_checks_inner_lines = true;  // Where a line inside the floor (grout, a box's edge) was taken for a junction, move that wall out to where its ceiling junction agrees with the other side's.
-  InnerLineCheckOptions inner_line;        // That check's thresholds.
-  double width_prior = 0.0;                // Width for frames where one junction is hidden, m (0 = none; a sequence uses the previous frame's).
-  double max_width_change = 0.15;          // In a sequence, a width this much (relative) narrower than the previous frame's means one junction is
-                                           // wrong (a box edge or grout line taken for it): the previous width is held from the wall that moved less (0 = off),
-                                           // after the ceiling's checks, unless the frame's two ceiling junctions agree within 6% (its walls confirmed).
-  double max_ceiling_disagreement = 0.10;  // In a sequence, a ceiling not found, or whose two sides' heights above the camera differ by more than this
-                                           // (|log ratio|; a wall distance is wrong), is replaced by the previous frame's height (0 = off).
-  double max_ceiling_change = 0.25;        // In a sequence, a ceiling whose two sides agree but whose height above the camera is more than this
-                                           // (relative) off the last trusted one, with the width off by the same factor, means both walls are wrong
-                                           // by it (boxes' edges taken on both sides): both are scaled to the trusted ceiling (0 = off).
-  bool estimate_end_wall = true;           // Look for a wall across the corridor where both junctions end.
-  EndWallDetectorOptions end_wall;         // End-wall search (beyond the paper).
-  double min_confidence = 0.0;             // Frames whose confidence (RecoverDepthResult::confidence) is lower are refused (kLowConfidence); 0 = never.
+  std::string solver = "joint";                // Solver name or chain (grid, closed_form, lm, joint, ...).
+  std::string rasterizer = "exact";            // Rasteriser name: exact or paper.
+  JunctionDetectorOptions perception;          // Junction-line detection (paper III-A).
+  bool track_junctions = true;                 // In a sequence (Detect given a JunctionTrack), seek each junction near the previous frame's first.
+  JunctionTrackerOptions tracker;              // That tracking's options.
+  SolverOptions solver_options;                // Options of every solver.
+  RasterizerOptions rasterizer_options;        // Options of every rasteriser.
+  int points_per_line = 30;                    // N: points sampled along each junction (paper III-B).
+  double min_width = 0.5;                      // Narrower estimates are implausible, m.
+  double max_width = 20.0;                     // Wider estimates are implausible, m.
+  double max_abs_yaw = 1.2;                    // |yaw| above this is implausible, rad (~69 deg).
+  double max_abs_pitch = 0.8;                  // |pitch| above this is implausible, rad (~46 deg).
+  double max_line_error = 0.01;                // RMS distance of the junction points to the lines the
+                                               // estimate predicts, over the image diagonal; more is
+                                               // implausible (e.g. a solver stopped at a bound).
+  double ceiling_height = 0.0;                 // Known ceiling height above the floor, m (0 = estimate or none).
+  bool estimate_ceiling = true;                // Without a known height, look for the ceiling/wall junctions.
+  CeilingDetectorOptions ceiling;              // Ceiling-height search (beyond the paper).
+  bool ceiling_checks_baseboards = true;       // Where a baseboard gave two parallel lines and the upper one was taken, take the lower one when it makes both ceiling junctions agree.
+  bool ceiling_checks_inner_lines = true;      // Where a line inside the floor (grout, a box's edge) was taken for a junction, move that wall out to where its ceiling junction agrees with the other side's.
+  InnerLineCheckOptions inner_line;            // That check's thresholds.
+  double width_prior = 0.0;                    // Width for frames where one junction is hidden, m (0 = none; a sequence uses the previous frame's).
+  double max_width_change = 0.15;              // In a sequence, a width this much (relative) narrower than the previous frame's means one junction is
+                                               // wrong (a box edge or grout line taken for it): the previous width is held from the wall that moved less (0 = off),
+                                               // after the ceiling's checks, unless the frame's two ceiling junctions agree within 6% (its walls confirmed).
+  double max_ceiling_disagreement = 0.10;      // In a sequence, a ceiling not found, or whose two sides' heights above the camera differ by more than this
+                                               // (|log ratio|; a wall distance is wrong), is replaced by the previous frame's height (0 = off).
+  double max_ceiling_change = 0.25;            // In a sequence, a ceiling whose two sides agree but whose height above the camera is more than this
+                                               // (relative) off the last trusted one, with the width off by the same factor, means both walls are wrong
+                                               // by it (boxes' edges taken on both sides): both are scaled to the trusted ceiling (0 = off).
+  bool estimate_end_wall = true;               // Look for a wall across the corridor where both junctions end.
+  EndWallDetectorOptions end_wall;             // End-wall search (beyond the paper).
+  double min_confidence = 0.0;                 // Frames whose confidence (RecoverDepthResult::confidence) is lower are refused (kLowConfidence); 0 = never.
   VerticalCrossingOptions vertical_crossings;  // The confidence's count of vertical edges crossing the junctions.
-  int search_max_width = 640;              // Wider images are halved (pyrDown) until they fit, one copy shared by the ceiling and end-wall searches, px (0 = full resolution).
+  int search_max_width = 640;                  // Wider images are halved (pyrDown) until they fit, one copy shared by the ceiling and end-wall searches, px (0 = full resolution).
 
   bool Check(std::string* why) const;
 };
@@ -75,35 +75,35 @@ struct StageTimes {
 };
 
 struct RecoverDepthResult {
-  Status status;                  // ok, or why this frame has no depth.
-  bool has_geometry = false;      // True once a plausible geometry was estimated.
-  CorridorGeometry geometry;      // The estimate (valid when has_geometry).
-  JunctionPair junctions;         // Both junction lines (raw pixels), as detected.
-  SolverSummary solver_summary;   // What the solver reported.
-  CeilingEstimate ceiling;        // The ceiling search (found = false when not run or not seen).
-  EndWallEstimate end_wall;       // The end-wall search (found = false when not run or not seen).
-  std::string fallback;           // Non-empty when the geometry is not the two junction lines' alone: how
-                                  // (one junction and a known width, or the previous frame's width held).
-  bool width_held = false;        // True when the previous frame's width replaced this frame's (max_width_change).
-  bool walls_scaled = false;      // True when both walls were scaled to the previous trusted ceiling (max_ceiling_change).
-  bool ceiling_held = false;      // True when the previous frame's ceiling height replaced this frame's (max_ceiling_disagreement).
-  bool junctions_tracked = false; // True when the junctions were found near the previous frame's (TrackJunctions), not by a whole search.
-  bool ceiling_trusted = false;   // True when the ceiling search found the ceiling and both sides, strong enough to compare, agreed within max_ceiling_disagreement.
-  double confidence = 0;          // In [0, 1]: the evidence for the recovered layout (frame_confidence.h); 0 without one.
-                                  // Not the per-pixel model-fit mask of confidence_mask.h.
-  FrameEvidence evidence;         // What the confidence was computed from.
-  int moved_side = -1;            // The wall the inner-line check moved out (0 left, 1 right; -1 none).
-  bool lower_line_taken = false;  // True when the baseboard check took a lower parallel line (ceiling_checks_baseboards).
+  Status status;                   // ok, or why this frame has no depth.
+  bool has_geometry = false;       // True once a plausible geometry was estimated.
+  CorridorGeometry geometry;       // The estimate (valid when has_geometry).
+  JunctionPair junctions;          // Both junction lines (raw pixels), as detected.
+  SolverSummary solver_summary;    // What the solver reported.
+  CeilingEstimate ceiling;         // The ceiling search (found = false when not run or not seen).
+  EndWallEstimate end_wall;        // The end-wall search (found = false when not run or not seen).
+  std::string fallback;            // Non-empty when the geometry is not the two junction lines' alone: how
+                                   // (one junction and a known width, or the previous frame's width held).
+  bool width_held = false;         // True when the previous frame's width replaced this frame's (max_width_change).
+  bool walls_scaled = false;       // True when both walls were scaled to the previous trusted ceiling (max_ceiling_change).
+  bool ceiling_held = false;       // True when the previous frame's ceiling height replaced this frame's (max_ceiling_disagreement).
+  bool junctions_tracked = false;  // True when the junctions were found near the previous frame's (TrackJunctions), not by a whole search.
+  bool ceiling_trusted = false;    // True when the ceiling search found the ceiling and both sides, strong enough to compare, agreed within max_ceiling_disagreement.
+  double confidence = 0;           // In [0, 1]: the evidence for the recovered layout (frame_confidence.h); 0 without one.
+                                   // Not the per-pixel model-fit mask of confidence_mask.h.
+  FrameEvidence evidence;          // What the confidence was computed from.
+  int moved_side = -1;             // The wall the inner-line check moved out (0 left, 1 right; -1 none).
+  bool lower_line_taken = false;   // True when the baseboard check took a lower parallel line (ceiling_checks_baseboards).
 
   // After Detect: both junctions were found, or only one (Reconstruct may then use a known width).
   bool ReadyToReconstruct() const {
     return status.ok() || (junctions.has_single && status.code() == StatusCode::kNoCorridorFound);
   }
-  cv::Mat image;                  // The frame as 8-bit BGR (set by Detect, used by Reconstruct).
-  Camera camera;                  // The frame's camera (set by Detect; for drawing the geometry).
-  WorkingImage search;            // The frame halved to search_max_width, when Detect halved it for the junction search too (from that halving; else empty).
-  cv::Mat depth;                  // CV_32F metres, camera-frame z, NaN = no estimate.
-  StageTimes times;               // Per-stage wall time.
+  cv::Mat image;        // The frame as 8-bit BGR (set by Detect, used by Reconstruct).
+  Camera camera;        // The frame's camera (set by Detect; for drawing the geometry).
+  WorkingImage search;  // The frame halved to search_max_width, when Detect halved it for the junction search too (from that halving; else empty).
+  cv::Mat depth;        // CV_32F metres, camera-frame z, NaN = no estimate.
+  StageTimes times;     // Per-stage wall time.
 };
 
 // Recovers depth frame after frame with one solver and one rasteriser, created once.

@@ -11,8 +11,8 @@
 namespace corridor {
 namespace {
 
-const cv::Scalar kLeftColor(60, 220, 60);     // BGR green
-const cv::Scalar kRightColor(220, 60, 220);   // BGR magenta
+const cv::Scalar kLeftColor(60, 220, 60);    // BGR green
+const cv::Scalar kRightColor(220, 60, 220);  // BGR magenta
 const cv::Scalar kSegmentColor(160, 160, 160);
 
 cv::Point ToPoint(const Eigen::Vector2d& p) {

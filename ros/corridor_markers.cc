@@ -7,7 +7,11 @@
 namespace corridor {
 namespace {
 
-enum SurfaceId { kFloor = 0, kLeftWall = 1, kRightWall = 2, kCeiling = 3, kEndWall = 4 };
+enum SurfaceId { kFloor = 0,
+                 kLeftWall = 1,
+                 kRightWall = 2,
+                 kCeiling = 3,
+                 kEndWall = 4 };
 
 visualization_msgs::Marker BaseMarker(const std_msgs::Header& header, int id) {
   visualization_msgs::Marker marker;
@@ -26,7 +30,8 @@ visualization_msgs::MarkerArray CorridorMarkers(const CorridorGeometry& g, doubl
                                                 double max_height, const std_msgs::Header& header) {
   const Eigen::Matrix3d rotation =
       (Eigen::AngleAxisd(g.pitch, Eigen::Vector3d::UnitX()) *
-       Eigen::AngleAxisd(g.yaw, Eigen::Vector3d::UnitY())).toRotationMatrix();
+       Eigen::AngleAxisd(g.yaw, Eigen::Vector3d::UnitY()))
+          .toRotationMatrix();
   const double h = g.camera_height;
   const double top = g.HasCeiling() ? h - g.ceiling_height : h - max_height;
   const double left = -g.LeftDistance();

@@ -54,8 +54,8 @@ void NodeStats::Problem(const std::string& stamp, const std::string& status_clas
 }
 
 diagnostic_msgs::DiagnosticStatus NodeStats::Report(const std::string& name,
-                                                     const std::string& hardware_id,
-                                                     double elapsed_s) {
+                                                    const std::string& hardware_id,
+                                                    double elapsed_s) {
   std::lock_guard<std::mutex> lock(mutex_);
   diagnostic_msgs::DiagnosticStatus status;
   status.name = name;

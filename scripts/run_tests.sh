@@ -10,6 +10,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install_deps.sh
+bash scripts/check_format.sh
 if [ "${CORRIDOR_SANITIZE:-1}" != 0 ]; then
   bash scripts/run_sanitized_tests.sh "$@"
   exec bash scripts/run_release_tests.sh

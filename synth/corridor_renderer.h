@@ -13,9 +13,9 @@ namespace synth {
 
 // One rendered frame and its ground truth.
 struct Frame {
-  cv::Mat bgr;                // CV_8UC3 image.
-  cv::Mat depth;              // CV_32F camera-frame z of the first surface hit, m (0 = none).
-  CorridorGeometry truth;     // yaw, pitch, offset, width, camera_height, ceiling_height.
+  cv::Mat bgr;             // CV_8UC3 image.
+  cv::Mat depth;           // CV_32F camera-frame z of the first surface hit, m (0 = none).
+  CorridorGeometry truth;  // yaw, pitch, offset, width, camera_height, ceiling_height.
 };
 
 // Ray-casts the corridor for a pinhole camera (distortion ignored) at the pose: floor tiles with

@@ -195,8 +195,7 @@ void AddRealBuildingParts(const SceneOptions& o, Random* r, CorridorScene* scene
     scene->windows.push_back(w);
     const double out = r->Uniform(0.03, 0.1), thick = r->Uniform(0.02, 0.05);
     scene->obstacles.push_back(WallBox(half, w.side, 0.0, out, w.sill - thick, w.sill, w.z0 - 0.05,
-                                       w.z1 + 0.05, r->Chance(0.5) ? w.frame_color
-                                                                   : TrimColor(r, scene->wall_color),
+                                       w.z1 + 0.05, r->Chance(0.5) ? w.frame_color : TrimColor(r, scene->wall_color),
                                        Obstacle::kSill));
   }
   std::vector<Span> blocked;
@@ -263,7 +262,7 @@ void AddRealBuildingParts(const SceneOptions& o, Random* r, CorridorScene* scene
     p.stripe_width = r->Uniform(0.04, 0.12);
     const double pick = r->Uniform(0, 1);
     p.stripe_color = pick < 0.4 ? cv::Vec3f(0.1f, 0.8f, 0.9f) : pick < 0.7 ? Grey(r, 0.85, 0.95)
-                                                                         : Grey(r, 0.05, 0.15);
+                                                                           : Grey(r, 0.05, 0.15);
   }
   if (o.carpet) {
     p.carpet_grain = r->Uniform(0.01, 0.03);

@@ -13,10 +13,10 @@ namespace synth {
 
 // A scene to generate: its content, camera and poses.
 struct ScenePreset {
-  std::string name;                // Scene folder name, e.g. "Cord_E01".
-  SceneOptions scene;              // Content.
-  Camera camera;                   // Intrinsics; mount_height is written to camera.yaml.
-  std::vector<CameraPose> poses;   // One frame per pose.
+  std::string name;               // Scene folder name, e.g. "Cord_E01".
+  SceneOptions scene;             // Content.
+  Camera camera;                  // Intrinsics; mount_height is written to camera.yaml.
+  std::vector<CameraPose> poses;  // One frame per pose.
 };
 
 // The paper's dataset, mirrored: 9 scenes of 15 frames at 420x360 (fx = fy = 250), 6 easy

@@ -10,11 +10,11 @@ namespace synth {
 
 // The first surface a ray meets.
 struct Hit {
-  double t = 0;             // Ray parameter of the hit (origin + t * direction).
-  bool found = false;       // False when the ray escapes (never, inside a closed corridor).
-  Eigen::Vector3d normal;   // Surface normal facing the ray.
-  cv::Vec3f albedo;         // Surface colour, BGR in [0, 1].
-  bool emissive = false;    // Light panels shine by themselves.
+  double t = 0;            // Ray parameter of the hit (origin + t * direction).
+  bool found = false;      // False when the ray escapes (never, inside a closed corridor).
+  Eigen::Vector3d normal;  // Surface normal facing the ray.
+  cv::Vec3f albedo;        // Surface colour, BGR in [0, 1].
+  bool emissive = false;   // Light panels shine by themselves.
 };
 
 // Casts a ray (world frame of corridor_scene.h) through the scene.

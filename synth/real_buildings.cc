@@ -19,7 +19,9 @@ class Draw {
   std::mt19937 engine_;
 };
 
-enum class Rig { kRobot, kHead, kLow };
+enum class Rig { kRobot,
+                 kHead,
+                 kLow };
 
 constexpr double kDeg = M_PI / 180.0;
 
@@ -109,9 +111,9 @@ ScenePreset MakeScene(const std::string& name, uint32_t seed, const RealBuilding
 }  // namespace
 
 const std::vector<std::string>& RealBuildingClasses() {
-  static const std::vector<std::string> kClasses = {"rail",    "wainscot", "furniture", "floor",
-                                                    "carpet",  "glass",    "windows",   "pillars",
-                                                    "head",    "low",      "mix"};
+  static const std::vector<std::string> kClasses = {"rail", "wainscot", "furniture", "floor",
+                                                    "carpet", "glass", "windows", "pillars",
+                                                    "head", "low", "mix"};
   return kClasses;
 }
 

@@ -192,7 +192,8 @@ int RunScene(const InputScene& scene, const DepthRecoverer& recoverer, const std
   std::unique_ptr<RayTable> rays;
   if (FLAGS_write_cloud) rays = std::make_unique<RayTable>(scene.camera);
   const int64_t known = scene.kind == InputKind::kImages
-                            ? static_cast<int64_t>(scene.frames.size()) : scene.frame_count;
+                            ? static_cast<int64_t>(scene.frames.size())
+                            : scene.frame_count;
   const int total = static_cast<int>(std::max<int64_t>(0, known - static_cast<int64_t>(kept.size())));
   // This run's geometry.csv rows in input order ("" = not done yet) with their frame names, and
   // each computed frame's position in them; the source (extraction thread) appends, the sink
@@ -329,13 +330,15 @@ int Main(int argc, char** argv) {
     if (!valid.ok()) return Usage(valid.message());
   }
   if (!FLAGS_output_bag.empty() && FLAGS_skip_existing) {
-    return Usage("--output_bag and --skip_existing do not go together: the kept frames would be "
-                 "missing from the new bag");
+    return Usage(
+        "--output_bag and --skip_existing do not go together: the kept frames would be "
+        "missing from the new bag");
   }
 #ifndef CORRIDOR_HAVE_ROSBAG
   if (!FLAGS_output_bag.empty()) {
-    return Usage("--output_bag: this build has no ROS bag support (configure with "
-                 "-DCORRIDOR_WITH_ROSBAG=ON)");
+    return Usage(
+        "--output_bag: this build has no ROS bag support (configure with "
+        "-DCORRIDOR_WITH_ROSBAG=ON)");
   }
 #endif
 
@@ -401,11 +404,12 @@ int Main(int argc, char** argv) {
     }
   }
 #endif
-  std::printf("corridor_depth: %d of %d frames ok, %d of them kept from an earlier run "
-              "(solver %s, rasterizer %s); outputs in %s%s%s\n",
-              total - failed, total, skipped, options.solver.c_str(), options.rasterizer.c_str(),
-              FLAGS_output_dir.c_str(), FLAGS_output_bag.empty() ? "" : ", depth bag ",
-              FLAGS_output_bag.c_str());
+  std::printf(
+      "corridor_depth: %d of %d frames ok, %d of them kept from an earlier run "
+      "(solver %s, rasterizer %s); outputs in %s%s%s\n",
+      total - failed, total, skipped, options.solver.c_str(), options.rasterizer.c_str(),
+      FLAGS_output_dir.c_str(), FLAGS_output_bag.empty() ? "" : ", depth bag ",
+      FLAGS_output_bag.c_str());
   return failed > 0 ? 1 : 0;
 }
 

@@ -172,7 +172,8 @@ int Main(int argc, char** argv) {
             << tally.verdicts[LabelVerdict::kOkButWrong] << " | "
             << tally.verdicts[LabelVerdict::kRefused] << " |\n";
   }
-  summary << "\n(A view of another kind than `corridor` is right when refused.)\n\n" << table.str();
+  summary << "\n(A view of another kind than `corridor` is right when refused.)\n\n"
+          << table.str();
   const fs::path out(FLAGS_output_dir);
   status = WriteTextAtomic((out / "scores.csv").string(), csv);
   if (status.ok()) status = WriteTextAtomic((out / "summary.md").string(), summary.str());

@@ -99,7 +99,6 @@ class BagSource : public FrameSource {
 };
 #endif
 
-
 }  // namespace
 
 Status OpenVideo(const std::string& path, std::unique_ptr<cv::VideoCapture>* capture) {
@@ -121,7 +120,8 @@ Status OpenVideo(const std::string& path, std::unique_ptr<cv::VideoCapture>* cap
   if (ok && opened->isOpened()) error.clear();
   if (!error.empty()) return Status::InvalidArgument(path + ": cannot open the video: " + error);
   if (!ok || !opened->isOpened()) {
-    return Status::InvalidArgument(path + ": cannot open the video (no OpenCV backend reads it, "
+    return Status::InvalidArgument(path +
+                                   ": cannot open the video (no OpenCV backend reads it, "
                                    "or it is not a video)");
   }
   *capture = std::move(opened);
@@ -148,7 +148,8 @@ Status OpenFrameSource(const InputScene& scene, std::unique_ptr<FrameSource>* so
       *source = std::make_unique<BagSource>(std::move(reader));
       return Status::Ok();
 #else
-      return Status::InvalidArgument(scene.stream_path + ": this build has no ROS bag support "
+      return Status::InvalidArgument(scene.stream_path +
+                                     ": this build has no ROS bag support "
                                      "(configure with -DCORRIDOR_WITH_ROSBAG=ON)");
 #endif
     }

@@ -84,8 +84,9 @@ Status FinishCamera(const CameraOverrides& overrides, const std::string& found,
     return Status::InvalidArgument("--focal=" + overrides.focal + ": the only value is 'auto'");
   }
   if (overrides.focal == "auto" && (!overrides.camera_file.empty() || overrides.fx > 0)) {
-    return Status::InvalidArgument("--focal=auto estimates the focal length: it does not go with "
-                                   "--camera or --fx");
+    return Status::InvalidArgument(
+        "--focal=auto estimates the focal length: it does not go with "
+        "--camera or --fx");
   }
   const bool pinhole_flags = overrides.camera_file.empty() && overrides.fx > 0;
   const bool fov_flag = overrides.camera_file.empty() &&
@@ -190,7 +191,8 @@ Status ResolveBag(const std::string& input, const CameraOverrides& overrides,
 #else
   (void)overrides;
   (void)topics;
-  return Status::InvalidArgument(input + ": this build has no ROS bag support (configure with "
+  return Status::InvalidArgument(input +
+                                 ": this build has no ROS bag support (configure with "
                                  "-DCORRIDOR_WITH_ROSBAG=ON)");
 #endif
 }
@@ -202,7 +204,8 @@ Status ResolveVideo(const std::string& input, const CameraOverrides& overrides,
   scene->stream_path = input;
   scene->name = fs::path(input).stem().string();
   if (!CameraFromCommandLine(overrides)) {
-    return Status::InvalidArgument(input + ": a video carries no calibration; pass --camera=FILE "
+    return Status::InvalidArgument(input +
+                                   ": a video carries no calibration; pass --camera=FILE "
                                    "(or --fx/--fy/--cx/--cy, or --hfov=DEG) and --camera_height=M");
   }
   cv::Mat first;

@@ -39,16 +39,16 @@ enum class InputKind {
 // One scene of an --input: a dataset scene, a plain folder of images, a single image, a ROS bag
 // or a video.
 struct InputScene {
-  std::string name;                  // Output folder name: the scene's or the folder's name.
-  std::string camera_source;         // Where the camera came from (a file, a bag topic, flags).
-  Camera camera;                     // Checked, with a positive mount height.
-  std::vector<DatasetFrame> frames;  // kImages: sorted by name; depth/truth/floor paths if any.
+  std::string name;                     // Output folder name: the scene's or the folder's name.
+  std::string camera_source;            // Where the camera came from (a file, a bag topic, flags).
+  Camera camera;                        // Checked, with a positive mount height.
+  std::vector<DatasetFrame> frames;     // kImages: sorted by name; depth/truth/floor paths if any.
   InputKind kind = InputKind::kImages;  // What holds the frames.
-  std::string stream_path;           // kRosBag, kVideo: the file.
-  std::string image_topic;           // kRosBag: the topic read.
-  std::string frame_id;              // kRosBag: the CameraInfo's frame_id ("" otherwise).
-  int64_t frame_count = 0;           // Frames (a video's is its container's estimate).
-  double frame_period = 0.1;         // Seconds between frames without a stamp (a video's 1/fps).
+  std::string stream_path;              // kRosBag, kVideo: the file.
+  std::string image_topic;              // kRosBag: the topic read.
+  std::string frame_id;                 // kRosBag: the CameraInfo's frame_id ("" otherwise).
+  int64_t frame_count = 0;              // Frames (a video's is its container's estimate).
+  double frame_period = 0.1;            // Seconds between frames without a stamp (a video's 1/fps).
   // Images with a camera from --hfov alone: each image gets a pinhole of its own size with this
   // field of view (degrees) and is read upright (EXIF orientation), as a photo viewer shows it;
   // `camera` is then the first image's. 0 = the scene's camera serves every frame, and images are

@@ -194,9 +194,10 @@ int Main(int argc, char** argv) {
   }
   const Status status = WriteCompareReport(rows, FLAGS_output_dir);
   if (!status.ok()) return Usage(status.ToString());
-  std::printf("%s\nsolver_compare: outputs in %s (solver_compare.csv, solver_compare.md, "
-              "width_error_vs_noise.png)\n",
-              CompareMarkdown(rows).c_str(), FLAGS_output_dir.c_str());
+  std::printf(
+      "%s\nsolver_compare: outputs in %s (solver_compare.csv, solver_compare.md, "
+      "width_error_vs_noise.png)\n",
+      CompareMarkdown(rows).c_str(), FLAGS_output_dir.c_str());
   return 0;
 }
 

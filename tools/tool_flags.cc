@@ -1,7 +1,8 @@
 #include "tools/tool_flags.h"
 
-DEFINE_string(camera, "", "Camera calibration YAML (ROS camera_info + camera_height); overrides "
-                          "<scene>/camera.yaml and <dataset>/camera.yaml");
+DEFINE_string(camera, "",
+              "Camera calibration YAML (ROS camera_info + camera_height); overrides "
+              "<scene>/camera.yaml and <dataset>/camera.yaml");
 DEFINE_double(fx, 0.0, "Uncalibrated mode: focal length x, px (with --fy, --cx, --cy; no file)");
 DEFINE_double(fy, 0.0, "Uncalibrated mode: focal length y, px (0 = --fx)");
 DEFINE_double(cx, -1.0, "Uncalibrated mode: principal point x, px (< 0 = image centre)");

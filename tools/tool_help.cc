@@ -24,11 +24,16 @@ constexpr int kIndent = 8;  // Where a flag's description starts, on the lines b
 
 const char* GroupTitle(FlagGroup group) {
   switch (group) {
-    case FlagGroup::kInput: return "Input";
-    case FlagGroup::kCamera: return "Camera";
-    case FlagGroup::kSolver: return "Solver and depth";
-    case FlagGroup::kOutput: return "Output";
-    case FlagGroup::kAdvanced: return "Advanced";
+    case FlagGroup::kInput:
+      return "Input";
+    case FlagGroup::kCamera:
+      return "Camera";
+    case FlagGroup::kSolver:
+      return "Solver and depth";
+    case FlagGroup::kOutput:
+      return "Output";
+    case FlagGroup::kAdvanced:
+      return "Advanced";
   }
   return "Advanced";
 }
@@ -212,10 +217,11 @@ std::string ToolHelpText(const ToolInfo& info) {
     AppendWrapped(info.notes, 0, &out);
     out += "\n";
   }
-  AppendWrapped("-h, --help: this text. --version: the version and the commit it was built from. "
-                "--helpfull: every flag, the logging library's included (e.g. --v=1 logs more "
-                "detail on stderr).",
-                0, &out);
+  AppendWrapped(
+      "-h, --help: this text. --version: the version and the commit it was built from. "
+      "--helpfull: every flag, the logging library's included (e.g. --v=1 logs more "
+      "detail on stderr).",
+      0, &out);
   return out;
 }
 

@@ -9,7 +9,11 @@
 namespace corridor {
 
 // The groups a tool's --help lists its flags in, in this order.
-enum class FlagGroup { kInput, kCamera, kSolver, kOutput, kAdvanced };
+enum class FlagGroup { kInput,
+                       kCamera,
+                       kSolver,
+                       kOutput,
+                       kAdvanced };
 
 // What a tool's --help and --version say about it.
 struct ToolInfo {

@@ -86,11 +86,12 @@ void BindCamera(py::module_& m) {
       .def_property(
           "distortion", [](const Camera& c) { return c.distortion; },
           [](Camera& c, const std::array<double, 5>& d) { c.distortion = d; })
-      .def_property_readonly("hfov",
-                             [](const Camera& c) {
-                               return 2.0 * std::atan(0.5 * c.image_width / c.fx) * 180.0 / M_PI;
-                             },
-                             "Horizontal field of view, degrees.")
+      .def_property_readonly(
+          "hfov",
+          [](const Camera& c) {
+            return 2.0 * std::atan(0.5 * c.image_width / c.fx) * 180.0 / M_PI;
+          },
+          "Horizontal field of view, degrees.")
       .def("__repr__", &Repr);
 
   m.def(

@@ -59,7 +59,8 @@ ImageInput ImageFromArray(const py::handle& image, bool rgb) {
   if (depth < 0) {
     throw py::value_error("image must be uint8 or uint16, not " + std::string(py::str(a.dtype())));
   }
-  const int channels = a.ndim() == 2 ? 1 : a.ndim() == 3 ? static_cast<int>(a.shape(2)) : 0;
+  const int channels = a.ndim() == 2 ? 1 : a.ndim() == 3 ? static_cast<int>(a.shape(2))
+                                                         : 0;
   if (channels != 1 && channels != 3 && channels != 4) {
     throw py::value_error("image must be HxW, HxWx3 or HxWx4, not of shape " +
                           std::string(py::str(py::getattr(image, "shape"))));

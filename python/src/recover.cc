@@ -45,8 +45,9 @@ py::dict Times(const StageTimes& t) {
 void BindRecover(py::module_& m) {
   py::class_<Status>(m, "Status", "Why a frame has no depth, or ok.")
       .def_property_readonly("ok", &Status::ok)
-      .def_property_readonly("code", [](const Status& s) { return StatusCodeName(s.code()); },
-                             "E.g. 'ok', 'no_corridor_found', 'low_confidence', 'invalid_argument'.")
+      .def_property_readonly(
+          "code", [](const Status& s) { return StatusCodeName(s.code()); },
+          "E.g. 'ok', 'no_corridor_found', 'low_confidence', 'invalid_argument'.")
       .def_property_readonly("message", &Status::message)
       .def_property_readonly("status_class", &StatusClassName,
                              "'ok', 'refused' (no corridor, implausible geometry, low confidence) or 'failed'.")
@@ -82,15 +83,18 @@ void BindRecover(py::module_& m) {
       .def("__repr__", [](const CorridorGeometry& g) { return "<Geometry " + g.ToString() + ">"; });
 
   py::class_<JunctionLine>(m, "JunctionLine", "A floor/wall junction line in raw image pixels.")
-      .def_property_readonly("line",
-                             [](const JunctionLine& l) {
-                               return py::make_tuple(l.line.x(), l.line.y(), l.line.z());
-                             },
-                             "(a, b, c) with a u + b v + c = 0 and a^2 + b^2 = 1.")
-      .def_property_readonly("near_end", [](const JunctionLine& l) { return Tuple(l.near_end); },
-                             "(u, v) of the supported end nearest the camera.")
-      .def_property_readonly("far_end", [](const JunctionLine& l) { return Tuple(l.far_end); },
-                             "(u, v) of the supported end toward the vanishing point.")
+      .def_property_readonly(
+          "line",
+          [](const JunctionLine& l) {
+            return py::make_tuple(l.line.x(), l.line.y(), l.line.z());
+          },
+          "(a, b, c) with a u + b v + c = 0 and a^2 + b^2 = 1.")
+      .def_property_readonly(
+          "near_end", [](const JunctionLine& l) { return Tuple(l.near_end); },
+          "(u, v) of the supported end nearest the camera.")
+      .def_property_readonly(
+          "far_end", [](const JunctionLine& l) { return Tuple(l.far_end); },
+          "(u, v) of the supported end toward the vanishing point.")
       .def_readonly("support_length", &JunctionLine::support_length)
       .def_readonly("confidence", &JunctionLine::confidence);
 
@@ -124,8 +128,9 @@ void BindRecover(py::module_& m) {
       .def_readonly("ceiling_held", &PyResult::ceiling_held)
       .def_readonly("junctions_tracked", &PyResult::junctions_tracked)
       .def_readonly("ceiling_trusted", &PyResult::ceiling_trusted)
-      .def_property_readonly("times", [](const PyResult& r) { return Times(r.times); },
-                             "Wall time of each stage, seconds.")
+      .def_property_readonly(
+          "times", [](const PyResult& r) { return Times(r.times); },
+          "Wall time of each stage, seconds.")
       .def("__repr__", [](const PyResult& r) {
         std::ostringstream out;
         out << "<Result " << r.status.ToString();

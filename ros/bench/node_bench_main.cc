@@ -131,10 +131,11 @@ int main(int argc, char** argv) {
               static_cast<double>(latencies.size()) / elapsed);
   std::printf("latency stamp -> depth received here: median %.1f ms, p99 %.1f ms\n",
               1e3 * Quantile(latencies, 0.5), 1e3 * Quantile(latencies, 0.99));
-  std::printf("node /diagnostics: latency to publication median %s s, p99 %s s; received %s, "
-              "published %s, dropped %s\n",
-              diagnostics["latency_median_s"].c_str(), diagnostics["latency_p99_s"].c_str(),
-              diagnostics["frames_received"].c_str(), diagnostics["frames_published"].c_str(),
-              diagnostics["frames_dropped"].c_str());
+  std::printf(
+      "node /diagnostics: latency to publication median %s s, p99 %s s; received %s, "
+      "published %s, dropped %s\n",
+      diagnostics["latency_median_s"].c_str(), diagnostics["latency_p99_s"].c_str(),
+      diagnostics["frames_received"].c_str(), diagnostics["frames_published"].c_str(),
+      diagnostics["frames_dropped"].c_str());
   return 0;
 }

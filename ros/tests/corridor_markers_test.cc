@@ -20,7 +20,7 @@ Point3 ToCamera(const CorridorGeometry& g, Point3 w) {
   const double cp = std::cos(g.yaw), sp = std::sin(g.yaw);
   const double ct = std::cos(g.pitch), st = std::sin(g.pitch);
   const Point3 a = {cp * w.x + sp * w.z, w.y, -sp * w.x + cp * w.z};  // R_y(phi)
-  return {a.x, ct * a.y - st * a.z, st * a.y + ct * a.z};            // R_x(theta)
+  return {a.x, ct * a.y - st * a.z, st * a.y + ct * a.z};             // R_x(theta)
 }
 
 CorridorGeometry TestGeometry() {

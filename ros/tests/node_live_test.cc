@@ -265,8 +265,8 @@ void MakeSequence(const Scratch& dir, Sequence* sequence, int frames = kFrames) 
   // corridor_depth on the same frames as one stream. A build without --sequence treats every
   // input as one stream: it refuses the flag (exit 2, "unknown flag") and runs without it.
   std::vector<std::string> run = {kDepthTool, "--input=" + data,
-                                   "--output_dir=" + dir.Path("tool"), "--write_vis=false",
-                                   "--sequence=true"};
+                                  "--output_dir=" + dir.Path("tool"), "--write_vis=false",
+                                  "--sequence=true"};
   int tool_exit = RunToCompletion(run, dir.Path("tool.log"));
   if (tool_exit == 2 && ReadText(dir.Path("tool.log")).find("unknown flag '--sequence") !=
                             std::string::npos) {
@@ -395,7 +395,8 @@ TEST(NodeLiveTest, SequenceDepthPointsAndBadFrames) {
   g_deadline = Clock::now() + std::chrono::minutes(5);
   LiveNode live(dir, {std::string("_camera_height:=") + height, "_publish_points:=true",
                       "_points_stride:=1", "_diagnostics_period:=0.5"});
-  ASSERT_TRUE(live.Start()) << "no ROS master:\n" << Master::Get().Log();
+  ASSERT_TRUE(live.Start()) << "no ROS master:\n"
+                            << Master::Get().Log();
   Received received;
   Graph graph(&received, true);
   ASSERT_TRUE(WaitFor([&] { return graph.Connected(); }, 30)) << live.NodeLog();
@@ -416,12 +417,16 @@ TEST(NodeLiveTest, SequenceDepthPointsAndBadFrames) {
   for (int i = 0; i < kFrames; ++i) {
     const ros::Time t = next_stamp();
     ASSERT_TRUE(send_and_wait(ImageMessage(sequence.images[i], t), InfoMessage(camera, t)))
-        << "frame " << i << ": nothing came back\n" << live.NodeLog();
+        << "frame " << i << ": nothing came back\n"
+        << live.NodeLog();
     const std::string key = StampKey(t);
     ASSERT_TRUE(WaitFor([&] {
       return received.Has(received.depth, key) && received.Has(received.info, key) &&
              received.Has(received.points, key);
-    }, 20)) << "frame " << i << ": no depth, camera_info or points\n" << live.NodeLog();
+    },
+                        20))
+        << "frame " << i << ": no depth, camera_info or points\n"
+        << live.NodeLog();
     good.push_back(t);
     if (i == 14) {
       ros::Time b = next_stamp();
@@ -523,10 +528,11 @@ TEST(NodeLiveTest, SequenceDepthPointsAndBadFrames) {
   EXPECT_LT(worst_point, 1e-5);
   const DepthMetrics node = AverageDepthMetrics(node_metrics);
   const DepthMetrics tool = AverageDepthMetrics(tool_metrics);
-  std::printf("[ node     ] AbsRel node %.5f, corridor_depth %.5f; coverage %.4f / %.4f; "
-              "worst point difference %.2g m; lowest confidence %.3f\n",
-              node.abs_rel, tool.abs_rel, node.coverage, tool.coverage, worst_point,
-              lowest_confidence);
+  std::printf(
+      "[ node     ] AbsRel node %.5f, corridor_depth %.5f; coverage %.4f / %.4f; "
+      "worst point difference %.2g m; lowest confidence %.3f\n",
+      node.abs_rel, tool.abs_rel, node.coverage, tool.coverage, worst_point,
+      lowest_confidence);
   EXPECT_NEAR(node.abs_rel, tool.abs_rel, 0.01);
   EXPECT_LT(node.abs_rel, 0.1);  // And a corridor, not an empty map.
   EXPECT_GT(node.coverage, 0.5);
@@ -538,7 +544,8 @@ TEST(NodeLiveTest, SequenceDepthPointsAndBadFrames) {
     const auto& d = received.last_diagnostics;
     return Value(d, "frames_published") == std::to_string(kFrames) &&
            Value(d, "frames_received") == std::to_string(kFrames + 3);
-  }, 10);
+  },
+                               10);
   diagnostic_msgs::DiagnosticStatus diagnostics;
   {
     std::lock_guard<std::mutex> lock(received.mutex);
@@ -566,7 +573,8 @@ TEST(NodeLiveTest, CameraHeightFromTf) {
   if (HasFatalFailure()) return;
   g_deadline = Clock::now() + std::chrono::minutes(3);
   LiveNode live(dir, {"_base_frame:=base_footprint", "_depth_encoding:=16UC1", "_sequence:=false"});
-  ASSERT_TRUE(live.Start()) << "no ROS master:\n" << Master::Get().Log();
+  ASSERT_TRUE(live.Start()) << "no ROS master:\n"
+                            << Master::Get().Log();
   Received received;
   Graph graph(&received, false);
   ASSERT_TRUE(WaitFor([&] { return graph.Connected(); }, 30)) << live.NodeLog();
@@ -607,7 +615,8 @@ TEST(NodeLiveTest, CameraHeightFromTf) {
     const ros::Time t = before + ros::Duration(0.1 * i);
     ASSERT_TRUE(send_and_wait(i, t)) << live.NodeLog();
     ASSERT_TRUE(WaitFor([&] { return received.Has(received.depth, StampKey(t)); }, 20))
-        << "frame " << i << ": no depth\n" << live.NodeLog();
+        << "frame " << i << ": no depth\n"
+        << live.NodeLog();
     std::lock_guard<std::mutex> lock(received.mutex);
     const auto& geometry = received.geometry[StampText(t)];
     EXPECT_EQ(Value(geometry, "status"), "ok");
@@ -634,7 +643,8 @@ TEST(NodeLiveTest, BadParameterNamedAtStartUp) {
            {"_depth_encoding:=mono16", "depth_encoding"},
            {"_solver:=nonesuch", "nonesuch"}}) {
     LiveNode live(dir, {"_camera_height:=0.7", arg});
-    ASSERT_TRUE(live.Start()) << "no ROS master:\n" << Master::Get().Log();
+    ASSERT_TRUE(live.Start()) << "no ROS master:\n"
+                              << Master::Get().Log();
     EXPECT_TRUE(WaitFor([&] { return !live.NodeRunning(); }, 20)) << arg;
     EXPECT_EQ(live.ExitCode(), 2) << arg;
     EXPECT_NE(live.NodeLog().find(name), std::string::npos) << arg << ": " << live.NodeLog();

@@ -33,15 +33,15 @@ namespace {
 // One set's figures, as the baseline file holds them.
 struct SetFigures {
   int frames = 0;
-  int refused = 0;                 // Frames whose status class is "refused".
-  int failed = 0;                  // ... "failed".
-  double width_error = 0;          // Mean |w - w_true| / w_true over the frames ok.
-  double max_width_error = 0;      // The largest of them.
-  double abs_rel = 0;              // Mean AbsRel of the depth < 5 m over the frames ok.
+  int refused = 0;             // Frames whose status class is "refused".
+  int failed = 0;              // ... "failed".
+  double width_error = 0;      // Mean |w - w_true| / w_true over the frames ok.
+  double max_width_error = 0;  // The largest of them.
+  double abs_rel = 0;          // Mean AbsRel of the depth < 5 m over the frames ok.
 };
 
-constexpr double kCap = 5.0;      // AbsRel < 5 m, as corridor_eval reports it.
-constexpr double kSlack = 0.10;   // Worse than the baseline by more than this (relative) fails.
+constexpr double kCap = 5.0;     // AbsRel < 5 m, as corridor_eval reports it.
+constexpr double kSlack = 0.10;  // Worse than the baseline by more than this (relative) fails.
 
 // Renders each (preset, pose) and recovers it alone; the figures over all of them.
 SetFigures Evaluate(const std::vector<std::pair<synth::ScenePreset, std::vector<size_t>>>& sets) {
@@ -201,11 +201,12 @@ TEST(AccuracyGuardTest, TheGeneratedSetsKeepTheirAccuracy) {
     for (const std::string& worse : Regressions(f, it->second)) {
       ADD_FAILURE() << name << ": " << worse << " (baseline " << BaselinePath() << ")";
     }
-    std::printf("%s: %d frames, %d refused, %d failed, width error %.3f%% (max %.2f%%), "
-                "AbsRel < 5 m %.4f (baseline %.3f%%, %.4f)\n",
-                name.c_str(), f.frames, f.refused, f.failed, 100 * f.width_error,
-                100 * f.max_width_error, f.abs_rel, 100 * it->second.width_error,
-                it->second.abs_rel);
+    std::printf(
+        "%s: %d frames, %d refused, %d failed, width error %.3f%% (max %.2f%%), "
+        "AbsRel < 5 m %.4f (baseline %.3f%%, %.4f)\n",
+        name.c_str(), f.frames, f.refused, f.failed, 100 * f.width_error,
+        100 * f.max_width_error, f.abs_rel, 100 * it->second.width_error,
+        it->second.abs_rel);
   }
 }
 

@@ -120,8 +120,7 @@ TEST(ExactRasterizerTest, PlaneSpansGiveTheSameDepthsAsEveryPixelDivided) {
   // A level camera in a 2 m corridor: the lowest row's middle is floor (depth h / n.r).
   const Camera camera = TestCamera();
   cv::Mat depth;
-  ASSERT_TRUE(ExactRasterizer(RasterizerOptions()).Render(TestGeometry(0, 0, 0, 2.0), camera,
-                                                          &depth).ok());
+  ASSERT_TRUE(ExactRasterizer(RasterizerOptions()).Render(TestGeometry(0, 0, 0, 2.0), camera, &depth).ok());
   const double y = (camera.image_height - 1 - camera.cy) / camera.fy;
   EXPECT_NEAR(depth.at<float>(camera.image_height - 1, camera.image_width / 2), 0.66 / y, 1e-5);
 }

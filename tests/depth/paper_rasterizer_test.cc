@@ -63,7 +63,7 @@ TEST(PaperRasterizerTest, ApproximatesTheBoxOnFloorAndWalls) {
       }
     }
     ASSERT_GT(compared, 1000);
-    EXPECT_LT(sum_rel / compared, 0.01);                 // Mean relative error below 1%.
+    EXPECT_LT(sum_rel / compared, 0.01);              // Mean relative error below 1%.
     EXPECT_LT(missing, 0.01 * (compared + missing));  // Almost every modelled pixel is filled.
   }
 }

@@ -13,8 +13,10 @@ using testing::ExactObservation;
 using testing::MakeGeometry;
 
 const CorridorGeometry kTruths[] = {
-    MakeGeometry(0.0, 0.0, 0.0, 2.0, 0.66),     MakeGeometry(0.12, 0.06, 0.25, 2.4, 0.62),
-    MakeGeometry(-0.2, 0.1, -0.35, 3.1, 0.66),  MakeGeometry(0.05, -0.04, 0.1, 1.8, 0.62),
+    MakeGeometry(0.0, 0.0, 0.0, 2.0, 0.66),
+    MakeGeometry(0.12, 0.06, 0.25, 2.4, 0.62),
+    MakeGeometry(-0.2, 0.1, -0.35, 3.1, 0.66),
+    MakeGeometry(0.05, -0.04, 0.1, 1.8, 0.62),
 };
 
 struct Tolerance {

@@ -59,8 +59,8 @@ TEST(JunctionLabels, ALineAKnownNumberOfPixelsOff) {
     double shift;
     LabelVerdict verdict;
   } cases[] = {{0, LabelVerdict::kRight},
-               {6, LabelVerdict::kRight},        // 4.24 px = 0.88% of 480.
-               {-30, LabelVerdict::kRough},      // 21.2 px = 4.4%.
+               {6, LabelVerdict::kRight},         // 4.24 px = 0.88% of 480.
+               {-30, LabelVerdict::kRough},       // 21.2 px = 4.4%.
                {40, LabelVerdict::kOkButWrong}};  // 28.3 px = 5.9%.
   for (const auto& k : cases) {
     const LabelScore score = ScoreAgainstLabel(LeftLabel(k.shift), true, Centred(), c);

@@ -150,10 +150,10 @@ inline std::string EncodeFuzzSeed(const cv::Mat& bgr, uint8_t solver, uint8_t ra
   bytes[2] = static_cast<char>(bgr.channels() - 1);
   bytes[3] = static_cast<char>(solver);
   bytes[4] = static_cast<char>(rasterizer);
-  bytes[6] = static_cast<char>(30 + 20);  // points_per_line 30.
+  bytes[6] = static_cast<char>(30 + 20);        // points_per_line 30.
   bytes[27] = static_cast<char>((96 + 8) / 2);  // paper_planes 96.
-  bytes[28] = static_cast<char>(50 + 2);  // lm max_iterations 50.
-  bytes[29] = static_cast<char>(2 + 1);  // refinement_levels 2.
+  bytes[28] = static_cast<char>(50 + 2);        // lm max_iterations 50.
+  bytes[29] = static_cast<char>(2 + 1);         // refinement_levels 2.
   const cv::Mat continuous = bgr.isContinuous() ? bgr : bgr.clone();
   bytes.append(reinterpret_cast<const char*>(continuous.data),
                continuous.total() * continuous.elemSize());

@@ -24,7 +24,8 @@ const char kPlumbBob[] =
 std::string RosYaml(const std::string& k = kK, const std::string& distortion = kPlumbBob,
                     const std::string& extra = "camera_height: 0.66\n") {
   return "image_width: 640\nimage_height: 480\ncamera_name: zed_left\n"
-         "camera_matrix:\n  rows: 3\n  cols: 3\n  data: " + k + "\n" + distortion +
+         "camera_matrix:\n  rows: 3\n  cols: 3\n  data: " +
+         k + "\n" + distortion +
          "rectification_matrix:\n  rows: 3\n  cols: 3\n  data: [1, 0, 0, 0, 1, 0, 0, 0, 1]\n" +
          extra;
 }
@@ -59,8 +60,9 @@ TEST(CameraYamlTest, ReadsRosCameraInfo) {
 TEST(CameraYamlTest, ShortDistortionIsZeroPadded) {
   TestDir dir;
   Camera c;
-  const std::string d = "distortion_model: plumb_bob\ndistortion_coefficients:\n"
-                        "  rows: 1\n  cols: 2\n  data: [0.1, -0.2]\n";
+  const std::string d =
+      "distortion_model: plumb_bob\ndistortion_coefficients:\n"
+      "  rows: 1\n  cols: 2\n  data: [0.1, -0.2]\n";
   ASSERT_TRUE(ReadText(dir, RosYaml(kK, d), &c).ok());
   EXPECT_EQ(c.distortion[0], 0.1);
   EXPECT_EQ(c.distortion[1], -0.2);
@@ -72,8 +74,9 @@ TEST(CameraYamlTest, ShortDistortionIsZeroPadded) {
 TEST(CameraYamlTest, NoneOrAbsentDistortionIsZero) {
   TestDir dir;
   Camera c;
-  const std::string none = "distortion_model: none\ndistortion_coefficients:\n"
-                           "  rows: 1\n  cols: 1\n  data: [0.3]\n";
+  const std::string none =
+      "distortion_model: none\ndistortion_coefficients:\n"
+      "  rows: 1\n  cols: 1\n  data: [0.3]\n";
   ASSERT_TRUE(ReadText(dir, RosYaml(kK, none), &c).ok());
   EXPECT_FALSE(c.HasDistortion());
   ASSERT_TRUE(ReadText(dir, RosYaml(kK, ""), &c).ok());
@@ -171,8 +174,9 @@ TEST(CameraYamlTest, BadMatrixShapesAreRejected) {
   ExpectError(dir, RosYaml("[500, 0, 319.5, 0, 510, 239.5, 0, 0]"), "camera_matrix");
   ExpectError(dir, RosYaml("[500, 2, 319.5, 0, 510, 239.5, 0, 0, 1]"), "no skew");
   ExpectError(dir, RosYaml("[500, 0, 1000, 0, 510, 239.5, 0, 0, 1]"), "principal point");
-  const std::string rational = "distortion_model: plumb_bob\ndistortion_coefficients:\n"
-                               "  data: [0, 0, 0, 0, 0, 0, 0, 0]\n";
+  const std::string rational =
+      "distortion_model: plumb_bob\ndistortion_coefficients:\n"
+      "  data: [0, 0, 0, 0, 0, 0, 0, 0]\n";
   ExpectError(dir, RosYaml(kK, rational), "distortion_coefficients.data' has 8 values");
 }
 

@@ -25,11 +25,11 @@ std::string ExifBlock(int orientation, bool little) {
     return little ? u16(v & 0xFFFF) + u16(v >> 16) : u16(v >> 16) + u16(v & 0xFFFF);
   };
   std::string tiff = little ? "II" : "MM";
-  tiff += u16(42) + u32(8);                      // Header; IFD0 right after it.
-  tiff += u16(1);                                // One entry:
-  tiff += u16(0x0112) + u16(3) + u32(1);         // orientation, SHORT, one value,
-  tiff += u16(orientation) + u16(0);             // the value, padded to four bytes;
-  tiff += u32(0);                                // no next IFD.
+  tiff += u16(42) + u32(8);               // Header; IFD0 right after it.
+  tiff += u16(1);                         // One entry:
+  tiff += u16(0x0112) + u16(3) + u32(1);  // orientation, SHORT, one value,
+  tiff += u16(orientation) + u16(0);      // the value, padded to four bytes;
+  tiff += u32(0);                         // no next IFD.
   const std::string payload = std::string("Exif\0\0", 6) + tiff;
   const int length = static_cast<int>(payload.size()) + 2;
   return std::string{static_cast<char>(0xFF), static_cast<char>(0xE1),

@@ -42,8 +42,10 @@ Offsets LeftOffsets(const std::string& scene, size_t pose) {
   without.baseboard_band_contrast = 0;
   const Offsets offsets{LeftOffsetPx(preset, frame, JunctionDetectorOptions()),
                         LeftOffsetPx(preset, frame, without)};
-  std::printf("%s frame %zu: left junction %.1f px from the truth with the band test, %.1f px "
-              "without\n", scene.c_str(), pose, offsets.with_band, offsets.without_band);
+  std::printf(
+      "%s frame %zu: left junction %.1f px from the truth with the band test, %.1f px "
+      "without\n",
+      scene.c_str(), pose, offsets.with_band, offsets.without_band);
   return offsets;
 }
 
@@ -67,8 +69,10 @@ TEST(BaseboardBandTest, AFloorLineBelowTheJunctionIsNotTaken) {
     eager.baseboard_band_contrast = 1e-6;
     const double eager_offset = LeftOffsetPx(preset, frame, eager);
     const double offset = LeftOffsetPx(preset, frame, JunctionDetectorOptions());
-    std::printf("Cord_E06 frame %zu: left junction %.1f px from the truth, %.1f px when any lower "
-                "line is taken\n", pose, offset, eager_offset);
+    std::printf(
+        "Cord_E06 frame %zu: left junction %.1f px from the truth, %.1f px when any lower "
+        "line is taken\n",
+        pose, offset, eager_offset);
     EXPECT_GT(eager_offset, 4.0) << "frame " << pose;
     EXPECT_LT(offset, 2.0) << "frame " << pose;
   }

@@ -94,7 +94,6 @@ TEST(BinomialBlurTest, RejectsBadImagesTapsAndRows) {
   EXPECT_NE(status.message().find("taps"), std::string::npos) << status.ToString();
 }
 
-
 // GaussianBlurView against cv::GaussianBlur itself, the independent path it must equal bit for
 // bit. OpenCV blurs a whole 8-bit image in fixed point, and a band of rows as those rows of the
 // whole image blurred; column crops and wider kernels are OpenCV's own call on the view. Every

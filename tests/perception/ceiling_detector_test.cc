@@ -143,7 +143,8 @@ TEST(CeilingDetectorTest, FindsAHighCeilingSeenOnlyFromAFewMetres) {
     // leans toward lower lines, which come into view nearer: within 5%, not 3%.)
     for (int side = 0; side < 2; ++side) {
       EXPECT_NEAR(estimate.side_height[side], options.ceiling_height,
-                  0.05 * options.ceiling_height) << preset.name << " " << side;
+                  0.05 * options.ceiling_height)
+          << preset.name << " " << side;
       EXPECT_GE(estimate.side_visible_support[side], estimate.side_support[side]);
       EXPECT_GE(estimate.side_visible_support[side], CeilingDetectorOptions().min_support)
           << preset.name << " " << side;

@@ -61,11 +61,11 @@ void ExpectSameGradient(const cv::Mat& image) {
 
 TEST(ColorGradientTest, MatchesSobelPerChannelOnNoiseAndEveryBorder) {
   ExpectSameGradient(RandomImage(37, 53, CV_8UC3, 1));
-  ExpectSameGradient(RandomImage(2, 5, CV_8UC3, 2));   // Two rows: both borders reflect.
-  ExpectSameGradient(RandomImage(1, 1, CV_8UC3, 3));   // One pixel.
-  ExpectSameGradient(RandomImage(9, 1, CV_8UC3, 4));   // One column.
-  ExpectSameGradient(RandomImage(16, 16, CV_8UC4, 5)); // Four channels.
-  ExpectSameGradient(RandomImage(20, 30, CV_8UC1, 6)); // Grey.
+  ExpectSameGradient(RandomImage(2, 5, CV_8UC3, 2));    // Two rows: both borders reflect.
+  ExpectSameGradient(RandomImage(1, 1, CV_8UC3, 3));    // One pixel.
+  ExpectSameGradient(RandomImage(9, 1, CV_8UC3, 4));    // One column.
+  ExpectSameGradient(RandomImage(16, 16, CV_8UC4, 5));  // Four channels.
+  ExpectSameGradient(RandomImage(20, 30, CV_8UC1, 6));  // Grey.
   // The rows are split into planes three at a time: three rows, two channels, and rows wide
   // enough for the vector loops and their tails.
   ExpectSameGradient(RandomImage(3, 70, CV_8UC3, 9));

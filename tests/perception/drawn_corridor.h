@@ -30,7 +30,7 @@ inline DrawnCorridor DrawCorridor(bool distractors, unsigned seed = 3) {
   c.vp = {338, 205};
   c.left_point = {40, 479};
   c.right_point = {610, 479};
-  c.bgr = cv::Mat(h, w, CV_8UC3, cv::Scalar(175, 180, 185));  // Walls.
+  c.bgr = cv::Mat(h, w, CV_8UC3, cv::Scalar(175, 180, 185));                            // Walls.
   cv::rectangle(c.bgr, cv::Rect(0, 0, w, 150), cv::Scalar(215, 215, 215), cv::FILLED);  // Ceiling.
   const auto pt = [](const Eigen::Vector2d& p) { return cv::Point(cvRound(p.x()), cvRound(p.y())); };
   if (distractors) {

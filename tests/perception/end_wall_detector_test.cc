@@ -71,7 +71,8 @@ TEST(EndWallDetectorTest, NoEndWallWhereTheCorridorGoesOn) {
       ASSERT_TRUE(synth::RenderFrame(preset.scene, preset.camera, preset.poses[i], &frame).ok());
       EndWallEstimate estimate;
       ASSERT_TRUE(DetectEndWall(frame.bgr, preset.camera, frame.truth, EndWallDetectorOptions(),
-                                &estimate).ok());
+                                &estimate)
+                      .ok());
       ++frames;
       if (estimate.found) {
         ++found;

@@ -202,7 +202,7 @@ TEST(JunctionTrackTest, TrustFollowsTheWholeSearchesAgreementAndTheInterval) {
   track.Tracked(pair, size);
   EXPECT_TRUE(track.Trusted(2));
   track.Tracked(pair, size);
-  EXPECT_FALSE(track.Trusted(2));  // Two tracked frames in a row: the next is searched whole.
+  EXPECT_FALSE(track.Trusted(2));     // Two tracked frames in a row: the next is searched whole.
   track.Searched(pair, size, false);  // ... and disagreed.
   EXPECT_FALSE(track.Trusted(2));
   JunctionPair lost;

@@ -47,8 +47,8 @@ TEST(OrientedEdgesTest, OrientationBinEdges) {
   EXPECT_EQ(OrientationBin(7, 7), 2);
   EXPECT_EQ(OrientationBin(0, 3), 4);
   EXPECT_EQ(OrientationBin(-7, 7), 6);
-  EXPECT_EQ(OrientationBin(-5, 0), 7);  // 180 degrees: the last bin.
-  EXPECT_EQ(OrientationBin(0, -3), 4);  // -90 degrees is 90.
+  EXPECT_EQ(OrientationBin(-5, 0), 7);      // 180 degrees: the last bin.
+  EXPECT_EQ(OrientationBin(0, -3), 4);      // -90 degrees is 90.
   EXPECT_EQ(OrientationBin(-100, -41), 0);  // -157.6 degrees is 22.4.
 }
 

@@ -13,7 +13,7 @@ const std::string kDir = std::string(CORRIDOR_SOURCE_DIR) + "/tests/data/real-co
 
 const char* const kPhotos[] = {"rtabmap_1.jpg", "rtabmap_2.jpg", "rtabmap_3.jpg", "rtabmap_4.jpg",
                                "rtabmap_5.jpg", "rtabmap_6.jpg", "rtabmap_7.jpg", "rtabmap_8.jpg",
-                               "popup_1.png",   "popup_2.png",   "popup_3.png"};
+                               "popup_1.png", "popup_2.png", "popup_3.png"};
 
 bool Plausible(const JunctionPair& pair, const cv::Size& size) {
   if (!pair.status.ok()) return false;

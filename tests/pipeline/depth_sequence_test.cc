@@ -46,18 +46,14 @@ TEST_F(DepthSequenceTest, FramesInOrderMatchTheTruthAndThePipeline) {
   ASSERT_TRUE(DepthRecoverer::Create(RecoverDepthOptions(), &recoverer).ok());
   int next = 0;
   std::vector<PipelineFrame> delivered;
-  FramePipeline(*recoverer).Run(
-      [&](PipelineFrame* frame) {
+  FramePipeline(*recoverer).Run([&](PipelineFrame* frame) {
         if (next == kFrames) return false;
         frame->name = std::to_string(next);
         frame->camera = &camera_;
         frame->image = frames_[next++].bgr;
-        return true;
-      },
-      [&](PipelineFrame&& frame) {
+        return true; }, [&](PipelineFrame&& frame) {
         delivered.push_back(std::move(frame));
-        return true;
-      });
+        return true; });
   ASSERT_EQ(delivered.size(), static_cast<size_t>(kFrames));
   for (int i = 0; i < kFrames; ++i) {
     EXPECT_EQ(delivered[i].result.junctions_tracked, results[i].junctions_tracked) << i;

@@ -45,7 +45,10 @@ class FramePipelineTest : public ::testing::Test {
 
   // Frame i of the stream: mostly the corridor; every 7th could not be read (read_status), every
   // 11th is an empty image with no read error, every 13th has no camera.
-  enum class Kind { kGood, kUnreadable, kEmpty, kNoCamera };
+  enum class Kind { kGood,
+                    kUnreadable,
+                    kEmpty,
+                    kNoCamera };
   static Kind KindOf(int i) {
     if (i % 7 == 3) return Kind::kUnreadable;
     if (i % 11 == 5) return Kind::kEmpty;

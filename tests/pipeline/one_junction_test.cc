@@ -82,19 +82,15 @@ TEST(OneJunctionTest, InASequenceThePreviousFramesWidthStandsIn) {
   ASSERT_TRUE(DepthRecoverer::Create(RecoverDepthOptions(), &recoverer).ok());
   int next = 0;
   std::vector<PipelineFrame> out;
-  FramePipeline(*recoverer).Run(
-      [&](PipelineFrame* frame) {
+  FramePipeline(*recoverer).Run([&](PipelineFrame* frame) {
         if (next == 2) return false;
         frame->name = next == 0 ? "full" : "crop";
         frame->camera = next == 0 ? &v.full_camera : &v.crop_camera;
         frame->image = next == 0 ? v.full.bgr : v.crop_bgr;
         ++next;
-        return true;
-      },
-      [&](PipelineFrame&& frame) {
+        return true; }, [&](PipelineFrame&& frame) {
         out.push_back(std::move(frame));
-        return true;
-      });
+        return true; });
   ASSERT_EQ(out.size(), 2u);
   ASSERT_TRUE(out[0].result.status.ok()) << out[0].result.status.ToString();
   // The full frame's width is the generator's (whatever checks it took to get there).

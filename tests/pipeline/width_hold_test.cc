@@ -17,10 +17,10 @@ namespace {
 
 struct HiddenJunction {
   Camera camera;
-  synth::Frame frame;             // Frame 10 of the paper preset's Cord_E05: a box hides the
-                                  // right junction.
-  synth::Frame before;            // Frame 9, where both junctions are seen.
-  CorridorGeometry previous;      // The true geometry of frame 9.
+  synth::Frame frame;         // Frame 10 of the paper preset's Cord_E05: a box hides the
+                              // right junction.
+  synth::Frame before;        // Frame 9, where both junctions are seen.
+  CorridorGeometry previous;  // The true geometry of frame 9.
 };
 
 HiddenJunction MakeHiddenJunction() {

@@ -25,11 +25,7 @@ using testing_util::ScratchDir;
 
 // A ROS camera_info YAML for ReliabilityCamera(); `changes` replace values, "" drops the key.
 std::string CameraText(const std::map<std::string, std::string>& changes) {
-  std::map<std::string, std::string> v = {{"image_width", "320"}, {"image_height", "240"},
-                                          {"fx", "250"},           {"fy", "250"},
-                                          {"cx", "159.5"},         {"cy", "119.5"},
-                                          {"k1", "0"},             {"camera_height", "1.2"},
-                                          {"camera_matrix", "yes"}};
+  std::map<std::string, std::string> v = {{"image_width", "320"}, {"image_height", "240"}, {"fx", "250"}, {"fy", "250"}, {"cx", "159.5"}, {"cy", "119.5"}, {"k1", "0"}, {"camera_height", "1.2"}, {"camera_matrix", "yes"}};
   for (const auto& [key, value] : changes) v[key] = value;
   std::string text;
   for (const char* key : {"image_width", "image_height", "camera_height"}) {

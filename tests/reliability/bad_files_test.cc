@@ -23,8 +23,7 @@ using testing_util::ScratchDir;
 std::string Encoded(const std::string& ext) {
   const Camera camera = testing_util::ReliabilityCamera();
   std::vector<uchar> bytes;
-  EXPECT_TRUE(cv::imencode(ext, testing_util::RenderTestCorridor(
-                                    camera, testing_util::ReliabilityGeometry()), bytes));
+  EXPECT_TRUE(cv::imencode(ext, testing_util::RenderTestCorridor(camera, testing_util::ReliabilityGeometry()), bytes));
   return std::string(bytes.begin(), bytes.end());
 }
 

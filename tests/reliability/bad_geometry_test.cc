@@ -57,8 +57,7 @@ std::vector<BadGeometry> BadGeometries() {
   return {
       {"parallel", WithLines(Segment({40, 350}, {140, 250}), Segment({300, 350}, {400, 250})),
        "parallel"},
-      {"vanishing_point_behind", WithLines(Segment({100, 200}, {180, 340}),
-                                           Segment({320, 200}, {240, 340})),
+      {"vanishing_point_behind", WithLines(Segment({100, 200}, {180, 340}), Segment({320, 200}, {240, 340})),
        "not on the floor"},
       // Yaw 1.5 rad (86 degrees): the vanishing point is far right of the image.
       {"yaw_near_90", ExactObservation(MakeGeometry(1.5, 0.05, 0.0, 2.0, 1.2), 20, 30, 200),

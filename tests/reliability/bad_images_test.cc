@@ -107,8 +107,7 @@ std::vector<Variant> Variants() {
   cv::cvtColor(bgr, grey, cv::COLOR_BGR2GRAY);
   cv::Mat alpha(grey.size(), CV_8UC1, cv::Scalar(200));
   cv::merge(std::vector<cv::Mat>{grey, alpha}, grey_alpha);
-  return {{"bgr", bgr}, {"sixteen_bit", sixteen}, {"alpha", bgra}, {"grey", grey},
-          {"grey_alpha", grey_alpha}};
+  return {{"bgr", bgr}, {"sixteen_bit", sixteen}, {"alpha", bgra}, {"grey", grey}, {"grey_alpha", grey_alpha}};
 }
 
 TEST(BadImages, LibraryRecoversSixteenBitAlphaAndGreyCorridors) {

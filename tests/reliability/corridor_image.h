@@ -45,7 +45,8 @@ inline cv::Mat RenderTestCorridor(const Camera& camera, const CorridorGeometry& 
       int surface = -1;
       const double z = testing::BoxDepth(camera, g, u, v, &surface);
       double shade = 20;
-      if (std::isfinite(z) && z <= 60) shade = surface == 0 ? 70 : surface == 1 ? 190 : 225;
+      if (std::isfinite(z) && z <= 60) shade = surface == 0 ? 70 : surface == 1 ? 190
+                                                                                : 225;
       const double noise = rng.gaussian(2.0);
       image.at<cv::Vec3b>(v, u) = cv::Vec3b(cv::saturate_cast<uchar>(shade + noise),
                                             cv::saturate_cast<uchar>(shade + 5 + noise),

@@ -54,8 +54,9 @@ TEST(FuzzRegression, ChecksAcceptAValidCorridorAndRejectedOptions) {
   for (uint8_t solver = 0; solver < 10; ++solver) {
     EXPECT_EQ(Check("recover_depth", fuzz::EncodeFuzzSeed(image, solver, 0)), "") << int(solver);
   }
-  EXPECT_EQ(Check("camera_yaml", "image_width: 64\nimage_height: 48\ncamera_matrix: {data: "
-                                 "[50, 0, 32, 0, 50, 24, 0, 0, 1]}\n"),
+  EXPECT_EQ(Check("camera_yaml",
+                  "image_width: 64\nimage_height: 48\ncamera_matrix: {data: "
+                  "[50, 0, 32, 0, 50, 24, 0, 0, 1]}\n"),
             "");
   EXPECT_EQ(Check("camera_yaml", "[unclosed"), "");
 }

@@ -101,7 +101,8 @@ TEST(PhotosAsTaken, APhotoStoredSidewaysIsReadUpright) {
   const std::string payload = std::string("Exif\0\0", 6) + tiff;
   const int length = static_cast<int>(payload.size()) + 2;
   const std::string app1 = std::string{'\xFF', '\xE1', static_cast<char>(length >> 8),
-                                       static_cast<char>(length & 0xFF)} + payload;
+                                       static_cast<char>(length & 0xFF)} +
+                           payload;
   const std::string bytes(jpeg.begin(), jpeg.end());
   dir.Write("turned/photo.jpg", bytes.substr(0, 2) + app1 + bytes.substr(2));
   std::vector<uchar> plain;

@@ -157,10 +157,13 @@ inline void ExpectCleanExit(const ToolRun& run, int code, const std::vector<std:
   // For docs/reliability.md: the exit code and the message, in the test log.
   std::printf("[ tool     ] exit %d: %s\n", run.exit_code,
               run.err.substr(0, run.err.find('\n', run.err.find_first_not_of('\n'))).c_str());
-  EXPECT_FALSE(run.signaled) << "killed by signal " << run.signal << "; stderr:\n" << run.err;
-  EXPECT_EQ(run.exit_code, code) << "stderr:\n" << run.err;
+  EXPECT_FALSE(run.signaled) << "killed by signal " << run.signal << "; stderr:\n"
+                             << run.err;
+  EXPECT_EQ(run.exit_code, code) << "stderr:\n"
+                                 << run.err;
   for (const auto& name : names) {
-    EXPECT_TRUE(Contains(run.err, name)) << "stderr does not name '" << name << "':\n" << run.err;
+    EXPECT_TRUE(Contains(run.err, name)) << "stderr does not name '" << name << "':\n"
+                                         << run.err;
   }
 }
 

@@ -92,7 +92,8 @@ std::string WriteSearchBag(const ScratchDir& dir) {
     items += std::string(i ? ", " : "") +
              "{\"topic\": \"/cam/camera_info\", \"kind\": \"camera_info\", \"stamp\": " + stamp +
              ", \"width\": 64, \"height\": 48, \"K\": [50, 0, 31.5, 0, 50, 23.5, 0, 0, 1]}, "
-             "{\"topic\": \"/cam/image_raw\", \"kind\": \"image\", \"stamp\": " + stamp +
+             "{\"topic\": \"/cam/image_raw\", \"kind\": \"image\", \"stamp\": " +
+             stamp +
              ", \"encoding\": \"rgb8\", \"width\": 64, \"height\": 48, \"step\": 192, "
              "\"data_file\": \"img.bin\"}";
   }
@@ -162,8 +163,10 @@ TEST(CorruptBagTest, MutatedBagsGetAStatusNeverACrash) {
       }
     }
   }
-  std::printf("[ mutated  ] 31 bags: %d read through, %d refused with a status, %d rosbag "
-              "crashes caught in the child\n", whole, refused, crashes);
+  std::printf(
+      "[ mutated  ] 31 bags: %d read through, %d refused with a status, %d rosbag "
+      "crashes caught in the child\n",
+      whole, refused, crashes);
   EXPECT_TRUE(seed_281_crashed) << "the known crashing mutation no longer crashes rosbag_storage "
                                    "(a new Debian version?): pick another seed with the search";
 }

@@ -87,8 +87,10 @@ TEST(PointCloudTest, PlyPointsLieOnTheRayCastCorridor) {
     std::sort(errors.begin(), errors.end());
     const double median = errors[errors.size() / 2];
     const double p90 = errors[errors.size() * 9 / 10];
-    std::printf("[ cloud    ] frame %zu: %zu points, relative distance to the true surface: "
-                "median %.4f, p90 %.4f\n", i, ply.points.size(), median, p90);
+    std::printf(
+        "[ cloud    ] frame %zu: %zu points, relative distance to the true surface: "
+        "median %.4f, p90 %.4f\n",
+        i, ply.points.size(), median, p90);
     EXPECT_LT(median, 0.03);
     EXPECT_LT(p90, 0.08);
   }

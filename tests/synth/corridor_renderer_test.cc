@@ -145,7 +145,7 @@ TEST(CorridorRendererTest, TruthAgreesWithTheJunctionsInTheImage) {
       const double zc = std::sin(m.t) * m.h + std::cos(m.t) * z1;
       const double u = camera.fx * x1 / zc + camera.cx, v = camera.fy * yc / zc + camera.cy;
       if (u < 3 || u > camera.image_width - 4 || v < 3 || v > camera.image_height - 4) continue;
-      const int inside_u = static_cast<int>(std::lround(u - 3 * side));  // Toward the floor.
+      const int inside_u = static_cast<int>(std::lround(u - 3 * side));   // Toward the floor.
       const int outside_u = static_cast<int>(std::lround(u + 3 * side));  // Toward the wall.
       const int row = static_cast<int>(std::lround(v));
       const double x_in = (inside_u - camera.cx) / camera.fx, y_in = (row - camera.cy) / camera.fy;

@@ -33,7 +33,8 @@ class CorridorSynthToolTest : public ::testing::Test {
 
 TEST_F(CorridorSynthToolTest, WritesOneRealBuildingsClass) {
   ASSERT_EQ(RunSynth("--preset=real_buildings --real_class=glass --real_scenes=2 --real_frames=2 "
-                "--width_px=96 --height_px=72 --output_dir=" + dir_.string()),
+                     "--width_px=96 --height_px=72 --output_dir=" +
+                     dir_.string()),
             0);
   for (const char* scene : {"glass_s3400", "glass_s3407"}) {
     EXPECT_TRUE(fs::exists(dir_ / scene / "truth.yaml")) << scene;
@@ -48,19 +49,20 @@ TEST_F(CorridorSynthToolTest, WritesOneRealBuildingsClass) {
 TEST_F(CorridorSynthToolTest, RejectsUnknownClassesAndBadCounts) {
   EXPECT_EQ(RunSynth("--preset=real_buildings --real_class=sofa --output_dir=" + dir_.string()), 2);
   EXPECT_EQ(RunSynth("--preset=real_buildings --real_class=rail --real_frames=0 --output_dir=" +
-                dir_.string()),
+                     dir_.string()),
             2);
   EXPECT_EQ(RunSynth("--preset=single --furniture=1.5 --output_dir=" + dir_.string()), 2);
 }
 
 TEST_F(CorridorSynthToolTest, PartSwitchesAndRollOnASingleFrame) {
   EXPECT_EQ(RunSynth("--preset=single --handrails --chair_rails --wainscot --furniture=0.5 --runner "
-                "--floor_stripes --carpet --glass_walls --window_bands --pillars --roll=0.03 "
-                "--width_px=96 --height_px=72 --output_dir=" + dir_.string()),
+                     "--floor_stripes --carpet --glass_walls --window_bands --pillars --roll=0.03 "
+                     "--width_px=96 --height_px=72 --output_dir=" +
+                     dir_.string()),
             0);
   EXPECT_TRUE(fs::exists(dir_ / "corridor" / "rgb" / "000000.png"));
   EXPECT_EQ(RunSynth("--preset=single --roll=0.9 --width_px=96 --height_px=72 --output_dir=" +
-                dir_.string()),
+                     dir_.string()),
             2);
   // --hfov_deg is the old name of --hfov: still taken, and checked like it.
   EXPECT_EQ(RunSynth("--preset=single --hfov_deg=70 --width_px=96 --height_px=72 --output_dir=" +

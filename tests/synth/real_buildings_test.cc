@@ -253,8 +253,8 @@ TEST(RealBuildingsTest, PaintKeepsTheDepthAndSillsAreNearer) {
       farther += d1 > d0 + 1e-6f;
     }
   }
-  EXPECT_GT(nearer, 0);     // The sill.
-  EXPECT_EQ(farther, 0);    // Panes are on the wall plane.
+  EXPECT_GT(nearer, 0);   // The sill.
+  EXPECT_EQ(farther, 0);  // Panes are on the wall plane.
   EXPECT_LT(nearer, camera.image_width * camera.image_height / 20);
 }
 

@@ -78,7 +78,8 @@ inline cv::Mat RenderCorridor(const Camera& camera, const CorridorGeometry& g, i
       double shade = 20;
       if (std::isfinite(z) && z <= 60) {
         depth->at<float>(v, u) = static_cast<float>(z);
-        shade = surface == 0 ? 70 : surface == 1 ? 190 : 225;
+        shade = surface == 0 ? 70 : surface == 1 ? 190
+                                                 : 225;
       }
       const double noise = rng.gaussian(2.0);
       image.at<cv::Vec3b>(v, u) = cv::Vec3b(cv::saturate_cast<uchar>(shade + noise),

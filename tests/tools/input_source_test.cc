@@ -57,8 +57,7 @@ TEST(InputSourceTest, WithoutAnyCalibrationTheMessageListsTheWays) {
   EXPECT_NE(status.message().find("--hfov"), std::string::npos) << status.message();
   overrides.hfov_deg = 60;
   overrides.camera_height = 0;
-  EXPECT_NE(ResolveInput(FolderWithOneImage("noheight"), overrides, &scenes).message().find(
-                "--camera_height"),
+  EXPECT_NE(ResolveInput(FolderWithOneImage("noheight"), overrides, &scenes).message().find("--camera_height"),
             std::string::npos);
 }
 

@@ -109,7 +109,7 @@ TEST(ReportBuilder, CeilingCountsFramesInViewFoundAndWithinTolerance) {
   frames[1].estimate.ceiling_height = 2.75;  // 10% off.
   frames[2].ceiling_visible = true;          // In view, not found.
   frames[2].ceiling_estimated = false;
-  frames[3].ceiling_visible = false;         // Failed frame, not in view: not counted.
+  frames[3].ceiling_visible = false;  // Failed frame, not in view: not counted.
   const EvalReport r = BuildReport(frames, {1.5, 2.0}, "grid", "paper");
   const CeilingSummary& e = r.scenes[0].ceiling;
   EXPECT_EQ(e.num_visible, 2);

@@ -43,10 +43,10 @@ const std::vector<ToolCase>& Tools() {
 }
 
 // Flags of glog and gflags that a tool's --help must not list.
-const char* const kForeignFlags[] = {"logtostderr", "alsologtostderr", "v",        "vmodule",
-                                     "minloglevel", "stderrthreshold", "log_dir",  "flagfile",
-                                     "fromenv",     "tryfromenv",      "undefok",  "helpfull",
-                                     "helpxml",     "log_prefix",      "logbuflevel"};
+const char* const kForeignFlags[] = {"logtostderr", "alsologtostderr", "v", "vmodule",
+                                     "minloglevel", "stderrthreshold", "log_dir", "flagfile",
+                                     "fromenv", "tryfromenv", "undefok", "helpfull",
+                                     "helpxml", "log_prefix", "logbuflevel"};
 
 std::string ToolPath(const std::string& name) {
   return std::string(CORRIDOR_BINARY_DIR) + "/tools/" + name;
@@ -74,7 +74,8 @@ TEST(ToolHelpTest, HelpListsOwnFlagsOnlyAndExitsZero) {
     for (const char* flag : {"--help", "-h"}) {
       const ToolRun run = RunTool(ToolPath(tool.name), {flag}, scratch);
       ASSERT_TRUE(run.started) << tool.name;
-      EXPECT_EQ(run.exit_code, 0) << tool.name << " " << flag << "\n" << run.err;
+      EXPECT_EQ(run.exit_code, 0) << tool.name << " " << flag << "\n"
+                                  << run.err;
       const std::set<std::string> listed = ListedFlags(run.out);
       for (const auto& own : tool.own_flags) {
         EXPECT_EQ(listed.count(own), 1u) << tool.name << " " << flag << " does not list --" << own;
@@ -122,7 +123,8 @@ TEST(ToolHelpTest, UnknownFlagIsBadUsage) {
   ScratchDir scratch;
   for (const auto& tool : Tools()) {
     const ToolRun run = RunTool(ToolPath(tool.name), {"--no_such_flag=1"}, scratch);
-    EXPECT_EQ(run.exit_code, 2) << tool.name << "\n" << run.err;
+    EXPECT_EQ(run.exit_code, 2) << tool.name << "\n"
+                                << run.err;
     EXPECT_NE(run.err.find("no_such_flag"), std::string::npos) << run.err;
   }
 }

@@ -39,8 +39,7 @@ std::string CsvText(const std::vector<SolverCaseStats>& rows) {
   return text;
 }
 
-const cv::Scalar kPalette[] = {{200, 80, 30},  {40, 160, 40},  {30, 30, 200},  {160, 40, 160},
-                               {0, 140, 200},  {120, 120, 0}, {90, 90, 90},   {200, 0, 120}};
+const cv::Scalar kPalette[] = {{200, 80, 30}, {40, 160, 40}, {30, 30, 200}, {160, 40, 160}, {0, 140, 200}, {120, 120, 0}, {90, 90, 90}, {200, 0, 120}};
 
 cv::Mat WidthErrorPlot(const std::vector<SolverCaseStats>& rows, double outliers) {
   std::map<std::string, std::vector<cv::Point2d>> lines;

@@ -11,12 +11,12 @@ namespace corridor {
 
 // One solver's outcome on one case (a noise level and outlier fraction, or a dataset).
 struct SolverCaseStats {
-  std::string solver;          // Solver name.
-  std::string case_name;       // E.g. "noise=1px outliers=10%" or "dataset".
-  double noise_px = 0;         // The case's noise, px (NaN for a dataset).
-  double outlier_fraction = 0; // The case's outlier fraction (NaN for a dataset).
-  int trials = 0;              // Solves attempted.
-  int failures = 0;            // Error status, non-finite, or a gross error (see IsGrossFailure).
+  std::string solver;                        // Solver name.
+  std::string case_name;                     // E.g. "noise=1px outliers=10%" or "dataset".
+  double noise_px = 0;                       // The case's noise, px (NaN for a dataset).
+  double outlier_fraction = 0;               // The case's outlier fraction (NaN for a dataset).
+  int trials = 0;                            // Solves attempted.
+  int failures = 0;                          // Error status, non-finite, or a gross error (see IsGrossFailure).
   double yaw_median = 0, yaw_p90 = 0;        // |yaw error|, rad, over non-failed trials.
   double pitch_median = 0, pitch_p90 = 0;    // |pitch error|, rad.
   double offset_median = 0, offset_p90 = 0;  // |offset error|, m.

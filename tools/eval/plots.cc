@@ -15,8 +15,7 @@ constexpr int kWidth = 900, kHeight = 420;
 
 // Distinct BGR colours for series.
 cv::Scalar SeriesColor(size_t i) {
-  static const cv::Scalar kColors[] = {{180, 119, 31}, {14, 127, 255},  {44, 160, 44},
-                                       {40, 39, 214},  {189, 103, 148}, {75, 86, 140}};
+  static const cv::Scalar kColors[] = {{180, 119, 31}, {14, 127, 255}, {44, 160, 44}, {40, 39, 214}, {189, 103, 148}, {75, 86, 140}};
   return kColors[i % (sizeof(kColors) / sizeof(kColors[0]))];
 }
 

@@ -41,15 +41,15 @@ bool IsSummary(const EvalReport& report, const GroupSummary* row) {
 }
 
 std::vector<std::string> DepthCells(const DepthMetrics& m) {
-  return {FormatNumber(m.abs_rel, 5),    FormatNumber(m.log10, 5),    FormatNumber(m.rmse, 5),
+  return {FormatNumber(m.abs_rel, 5), FormatNumber(m.log10, 5), FormatNumber(m.rmse, 5),
           FormatNumber(m.rmse_log10, 5), FormatNumber(m.rmse_log, 5), FormatNumber(m.sq_rel, 5),
-          FormatNumber(m.delta1, 4),     FormatNumber(m.delta2, 4),   FormatNumber(m.delta3, 4),
+          FormatNumber(m.delta1, 4), FormatNumber(m.delta2, 4), FormatNumber(m.delta3, 4),
           Percent(m.coverage, 2)};
 }
 
-const std::vector<std::string> kDepthHeader = {"AbsRel",       "Log10",     "RMSE",   "RMSElog",
-                                               "RMSElog (ln)", "SqRel",     "δ<1.25", "δ<1.25²",
-                                               "δ<1.25³",      "coverage %"};
+const std::vector<std::string> kDepthHeader = {"AbsRel", "Log10", "RMSE", "RMSElog",
+                                               "RMSElog (ln)", "SqRel", "δ<1.25", "δ<1.25²",
+                                               "δ<1.25³", "coverage %"};
 
 TextTable WidthTable(const EvalReport& r) {
   TextTable t;

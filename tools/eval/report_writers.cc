@@ -51,12 +51,12 @@ std::string CsvNumber(double value) {
   return text;
 }
 
-const char* const kMetricNames[] = {"abs_rel", "log10",  "rmse",   "rmse_log10", "rmse_log",
-                                    "sq_rel",  "delta1", "delta2", "delta3",     "coverage"};
+const char* const kMetricNames[] = {"abs_rel", "log10", "rmse", "rmse_log10", "rmse_log",
+                                    "sq_rel", "delta1", "delta2", "delta3", "coverage"};
 
 std::vector<double> MetricValues(const DepthMetrics& m) {
-  return {m.abs_rel, m.log10,  m.rmse,   m.rmse_log10, m.rmse_log,
-          m.sq_rel,  m.delta1, m.delta2, m.delta3,     m.coverage};
+  return {m.abs_rel, m.log10, m.rmse, m.rmse_log10, m.rmse_log,
+          m.sq_rel, m.delta1, m.delta2, m.delta3, m.coverage};
 }
 
 void AddGeometry(bool valid, const CorridorGeometry& g, std::vector<std::string>* row) {
@@ -92,9 +92,9 @@ std::string ReportMarkdown(const std::vector<EvalReport>& configs, const ReportC
 }
 
 std::string ReportCsv(const std::vector<EvalReport>& configs) {
-  std::vector<std::string> header = {"config",     "scene",          "frame",      "status",
-                                     "reason",     "est_yaw",        "est_pitch",  "est_offset",
-                                     "est_width",  "true_yaw",       "true_pitch", "true_offset",
+  std::vector<std::string> header = {"config", "scene", "frame", "status",
+                                     "reason", "est_yaw", "est_pitch", "est_offset",
+                                     "est_width", "true_yaw", "true_pitch", "true_offset",
                                      "true_width", "width_rel_error", "est_ceiling_height",
                                      "true_ceiling_height", "ceiling_visible", "junctions_tracked",
                                      "confidence", "left_junction", "right_junction",
