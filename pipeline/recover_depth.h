@@ -57,7 +57,7 @@ struct RecoverDepthOptions {
                                                // by it (boxes' edges taken on both sides): both are scaled to the trusted ceiling (0 = off).
   bool estimate_end_wall = true;               // Look for a wall across the corridor where both junctions end.
   EndWallDetectorOptions end_wall;             // End-wall search (beyond the paper).
-  double min_confidence = 0.0;                 // Frames whose confidence (RecoverDepthResult::confidence) is lower are refused (kLowConfidence); 0 = never.
+  double min_confidence = 0.6;                 // Frames whose confidence (RecoverDepthResult::confidence) is lower are refused (kLowConfidence); 0 = never. Chosen on generated sets (docs/results.md).
   VerticalCrossingOptions vertical_crossings;  // The confidence's count of vertical edges crossing the junctions.
   int search_max_width = 640;                  // Wider images are halved (pyrDown) until they fit, one copy shared by the ceiling and end-wall searches, px (0 = full resolution).
 
