@@ -1,7 +1,7 @@
 #include "ros/node_config.h"
 
 #include "io/ros_depth_message.h"
-#include "ros/option_table.h"
+#include "pipeline/option_table.h"
 
 namespace corridor {
 namespace {

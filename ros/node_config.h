@@ -11,7 +11,7 @@ namespace corridor {
 
 // Everything the node reads from its private parameters at start-up.
 struct NodeConfig {
-  RecoverDepthOptions options;           // ~solver, ~rasterizer, ... (ros/option_table.h).
+  RecoverDepthOptions options;           // ~solver, ~rasterizer, ... (pipeline/option_table.h).
   double camera_height = 0.0;            // ~camera_height: optical centre above the floor, m.
   std::string base_frame;                // ~base_frame: a frame on the floor; height from TF instead.
   double tf_timeout = 0.1;               // ~tf_timeout: wait this long for the transform, s.

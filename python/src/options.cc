@@ -2,7 +2,11 @@
 
 #include <functional>
 #include <map>
+#include <string>
+#include <type_traits>
+#include <utility>
 
+#include "pipeline/option_table.h"
 #include "python/src/common.h"
 
 namespace corridor {
@@ -15,6 +19,48 @@ template <typename T>
 Setter Field(T RecoverDepthOptions::*field) {
   return [field](RecoverDepthOptions* o, const py::handle& v) { o->*field = py::cast<T>(v); };
 }
+// Sets the option the tools call `name` in *options to `value`, when its type is T
+// (pipeline/option_table.h).
+template <typename T>
+class SetByName : public OptionVisitor {
+ public:
+  SetByName(std::string name, T value) : name_(std::move(name)), value_(std::move(value)) {}
+  void String(const char* n, std::string* f) override { Set(n, f); }
+  void Double(const char* n, double* f) override { Set(n, f); }
+  void Int(const char* n, int* f) override { Set(n, f); }
+  void Bool(const char* n, bool* f) override { Set(n, f); }
+
+ private:
+  template <typename F>
+  void Set(const char* n, F* field) {
+    if constexpr (std::is_same_v<F, T>) {
+      if (name_ == n) *field = value_;
+    }
+  }
+  const std::string name_;
+  const T value_;
+};
+
+// A setter per option name of the table, each of its option's type.
+class SetterNamer : public OptionVisitor {
+ public:
+  explicit SetterNamer(std::map<std::string, Setter>* out) : out_(out) {}
+  void String(const char* name, std::string*) override { Add<std::string>(name); }
+  void Double(const char* name, double*) override { Add<double>(name); }
+  void Int(const char* name, int*) override { Add<int>(name); }
+  void Bool(const char* name, bool*) override { Add<bool>(name); }
+
+ private:
+  template <typename T>
+  void Add(const std::string& name) {
+    (*out_)[name] = [name](RecoverDepthOptions* o, const py::handle& v) {
+      SetByName<T> setting(name, py::cast<T>(v));
+      VisitRecoverDepthOptions(o, &setting);
+    };
+  }
+  std::map<std::string, Setter>* out_;
+};
+
 template <typename S, typename T>
 Setter Nested(S RecoverDepthOptions::*group, T S::*field) {
   return [group, field](RecoverDepthOptions* o, const py::handle& v) {
@@ -22,46 +68,26 @@ Setter Nested(S RecoverDepthOptions::*group, T S::*field) {
   };
 }
 
+// The RecoverDepthOptions fields by name: every name the tools' flags use (pipeline/option_table.h,
+// the one list the ROS node's parameters share), plus the option structs' own field names.
 const std::map<std::string, Setter>& Setters() {
   static const std::map<std::string, Setter> setters = [] {
     using O = RecoverDepthOptions;
     std::map<std::string, Setter> s;
-    // RecoverDepthOptions' own fields.
-    s["solver"] = Field(&O::solver);
-    s["rasterizer"] = Field(&O::rasterizer);
-    s["track_junctions"] = Field(&O::track_junctions);
-    s["points_per_line"] = Field(&O::points_per_line);
+    // The flag names: each setter finds its field by visiting the options it is given.
+    RecoverDepthOptions defaults;
+    SetterNamer namer(&s);
+    VisitRecoverDepthOptions(&defaults, &namer);
+    // RecoverDepthOptions' own field names where they differ from the flags'.
     s["min_width"] = Field(&O::min_width);
     s["max_width"] = Field(&O::max_width);
     s["max_abs_yaw"] = Field(&O::max_abs_yaw);
     s["max_abs_pitch"] = Field(&O::max_abs_pitch);
     s["max_line_error"] = Field(&O::max_line_error);
-    s["ceiling_height"] = Field(&O::ceiling_height);
     s["estimate_ceiling"] = Field(&O::estimate_ceiling);
     s["ceiling_checks_baseboards"] = Field(&O::ceiling_checks_baseboards);
     s["ceiling_checks_inner_lines"] = Field(&O::ceiling_checks_inner_lines);
-    s["width_prior"] = Field(&O::width_prior);
-    s["max_width_change"] = Field(&O::max_width_change);
-    s["max_ceiling_disagreement"] = Field(&O::max_ceiling_disagreement);
-    s["max_ceiling_change"] = Field(&O::max_ceiling_change);
     s["estimate_end_wall"] = Field(&O::estimate_end_wall);
-    s["search_max_width"] = Field(&O::search_max_width);
-    s["min_confidence"] = Field(&O::min_confidence);
-    // The tools' flag names for the same or nested fields.
-    s["end_wall"] = Field(&O::estimate_end_wall);
-    s["inner_line_check"] = Field(&O::ceiling_checks_inner_lines);
-    s["max_range"] = Nested(&O::rasterizer_options, &RasterizerOptions::max_range);
-    s["max_height"] = Nested(&O::rasterizer_options, &RasterizerOptions::max_height);
-    s["redetect_interval"] = Nested(&O::tracker, &JunctionTrackerOptions::redetect_interval);
-    s["junction_max_width"] = Nested(&O::perception, &JunctionDetectorOptions::max_work_width);
-    s["baseboard_band_contrast"] =
-        Nested(&O::perception, &JunctionDetectorOptions::baseboard_band_contrast);
-    s["roi_top"] = Nested(&O::perception, &JunctionDetectorOptions::roi_top_fraction);
-    s["max_floor_texture"] = Nested(&O::perception, &JunctionDetectorOptions::max_floor_texture);
-    s["hough_angle_window"] =
-        Nested(&O::perception, &JunctionDetectorOptions::hough_angle_window_deg);
-    s["relaxed_hough_threshold"] =
-        Nested(&O::perception, &JunctionDetectorOptions::relaxed_hough_threshold);
     // The solvers' shared options.
     s["loss"] = Nested(&O::solver_options, &SolverOptions::loss);
     s["loss_scale"] = Nested(&O::solver_options, &SolverOptions::loss_scale);

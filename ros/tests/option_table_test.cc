@@ -8,7 +8,7 @@
 #include <gflags/gflags.h>
 #include <gtest/gtest.h>
 
-#include "ros/option_table.h"
+#include "pipeline/option_table.h"
 #include "tools/tool_flags.h"
 
 namespace corridor {

@@ -1,4 +1,4 @@
-#include "ros/option_table.h"
+#include "pipeline/option_table.h"
 
 namespace corridor {
 

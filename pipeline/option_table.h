@@ -7,10 +7,10 @@
 namespace corridor {
 
 // The RecoverDepthOptions that corridor_depth's flags set (tools/tool_flags.cc), by the flag's
-// name, so that the node's private parameters carry the same names: ~solver, ~max_range, ...
-// A visitor sees each option's name and field; the field holds its default on the way in.
-// No gflags and no ROS here: the node reads its parameters with it, and a test checks it against
-// the tool's flags (same names, same defaults, same fields).
+// name, so that the ROS node's private parameters and the Python module's keywords carry the same
+// names: solver, max_range, min_confidence, ... A visitor sees each option's name and field; the
+// field holds its default on the way in. No gflags and no ROS here; ros/tests/option_table_test.cc
+// checks it against the tool's flags (same names, same defaults, same fields).
 class OptionVisitor {
  public:
   virtual ~OptionVisitor() = default;
