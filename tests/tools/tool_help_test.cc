@@ -27,7 +27,7 @@ const std::vector<ToolCase>& Tools() {
       {"corridor_depth",
        {"input", "output_dir", "camera", "hfov", "fx", "focal", "camera_height", "solver",
         "rasterizer", "max_range", "write_vis", "write_cloud", "skip_existing", "output_bag",
-        "image_topic", "relaxed_hough_threshold"}},
+        "image_topic", "relaxed_hough_threshold", "sequence", "min_confidence", "write_model_fit"}},
       {"corridor_eval",
        {"dataset", "output_dir", "caps", "threads", "compare", "solver", "rasterizer", "hfov",
         "camera_height", "write_depth", "vis_max_error"}},
@@ -38,6 +38,7 @@ const std::vector<ToolCase>& Tools() {
       {"solver_compare",
        {"output_dir", "solvers", "noise", "outliers", "trials", "seed", "dataset", "loss",
         "loss_scale"}},
+      {"corridor_score", {"labels", "output_dir", "tile_width", "hfov", "min_confidence", "solver"}},
   };
   return tools;
 }
