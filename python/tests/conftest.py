@@ -44,14 +44,14 @@ def truth_frames(scene):
     return frames
 
 
-@pytest.fixture(scope="session")
+@pytest.fixture(scope="module")  # ctest runs each test file in its own pytest
 def single_frame(tmp_path_factory):
     """One generated 640x480 corridor frame: (image path, camera.yaml path, truth dict)."""
     scene = synthesize(tmp_path_factory.mktemp("single"), "--preset=single")
     return scene / "rgb" / "000000.png", scene / "camera.yaml", truth_frames(scene)[0]
 
 
-@pytest.fixture(scope="session")
+@pytest.fixture(scope="module")  # ctest runs each test file in its own pytest
 def sequence_scene(tmp_path_factory):
     """A generated sequence of 6 frames: the scene folder."""
     return synthesize(tmp_path_factory.mktemp("sequence"), "--preset=sequence", "--frames=6")
