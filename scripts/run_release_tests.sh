@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The tests that need a plain Release build (build/): the Python module (an AddressSanitizer build
-# does not import into a plain Python) with its install into a temporary prefix, and the live ROS
-# node (started with its own rosmaster on a loopback port). Builds only what they need.
+# does not import into a plain Python) with its install into a temporary prefix, the live ROS
+# node (started with its own rosmaster on a loopback port), and the C++ install with a consumer
+# program (scripts/check_install.sh). Builds only what they need (no tests of their own).
 # Usage: bash scripts/run_release_tests.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -9,7 +10,8 @@ BUILD_DIR=${BUILD_DIR:-build}
 start=$(date +%s)
 cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release -DCORRIDOR_WERROR=ON \
   -DCORRIDOR_BUILD_BENCHMARKS=OFF >/dev/null
-targets=(corridor_depth corridor_synth)
+# Every installed target, for the install check; and the tools the Python tests run.
+targets=(corridor_depth corridor_synth corridor_eval corridor_score solver_compare)
 labels=()
 if grep -q "CORRIDOR_BUILD_PYTHON:BOOL=ON" "$BUILD_DIR/CMakeCache.txt"; then
   targets+=(corridor_depth_python corridor_python_reference)
@@ -28,4 +30,5 @@ cmake --build "$BUILD_DIR" -j"$(nproc)" --target "${targets[@]}"
 built=$(date +%s)
 regex=$(IFS='|'; echo "${labels[*]}")
 (cd "$BUILD_DIR" && ctest --output-on-failure -j"$(nproc)" --timeout 600 -L "$regex")
+bash scripts/check_install.sh "$BUILD_DIR"
 echo "run_release_tests: build $((built - start)) s, tests $(($(date +%s) - built)) s"
