@@ -53,32 +53,24 @@ std::pair<std::string, std::string> StatusColumns(const Status& status) {
 
 void GeometryCsv::Add(const std::string& frame, const RecoverDepthResult& result,
                       const std::string& stamp) {
-  if (!result.has_geometry) {
-    AddFailure(frame, result.status, stamp);
-    if (result.camera.fx > 0) {  // The intrinsics of a frame that was read.
-      std::vector<std::string> fields;
-      SplitCsvRow(rows_.back(), &fields);
-      fields[3] = Number(result.confidence, "%.3f");
-      fields[10] = Number(result.camera.fx, "%.3f");
-      fields[11] = Number(result.camera.fy, "%.3f");
-      fields[12] = Number(result.camera.cx, "%.3f");
-      fields[13] = Number(result.camera.cy, "%.3f");
-      fields[14] = Number(result.times.total, "%.6f");
-      rows_.back() = JoinRow(fields);
-    }
-    return;
-  }
-  const CorridorGeometry& g = result.geometry;
   auto [status, note] = StatusColumns(result.status);
   if (result.status.ok()) note = result.fallback;
-  rows_.push_back(JoinRow({frame, status, note, Number(result.confidence, "%.3f"),
-                           Number(g.yaw, "%.6f"), Number(g.pitch, "%.6f"),
-                           Number(g.offset, "%.4f"), Number(g.width, "%.4f"),
-                           g.HasCeiling() ? Number(g.ceiling_height, "%.4f") : "",
-                           g.HasEndWall() ? Number(g.end_distance, "%.4f") : "",
-                           Number(result.camera.fx, "%.3f"), Number(result.camera.fy, "%.3f"),
-                           Number(result.camera.cx, "%.3f"), Number(result.camera.cy, "%.3f"),
-                           Number(result.times.total, "%.6f"), stamp}));
+  std::vector<std::string> fields(16);
+  fields[0] = frame, fields[1] = status, fields[2] = note, fields[15] = stamp;
+  if (result.has_geometry) {
+    const CorridorGeometry& g = result.geometry;
+    fields[4] = Number(g.yaw, "%.6f"), fields[5] = Number(g.pitch, "%.6f");
+    fields[6] = Number(g.offset, "%.4f"), fields[7] = Number(g.width, "%.4f");
+    if (g.HasCeiling()) fields[8] = Number(g.ceiling_height, "%.4f");
+    if (g.HasEndWall()) fields[9] = Number(g.end_distance, "%.4f");
+  }
+  if (result.camera.fx > 0) {  // A frame that was read: its confidence, intrinsics and time.
+    fields[3] = Number(result.confidence, "%.3f");
+    fields[10] = Number(result.camera.fx, "%.3f"), fields[11] = Number(result.camera.fy, "%.3f");
+    fields[12] = Number(result.camera.cx, "%.3f"), fields[13] = Number(result.camera.cy, "%.3f");
+    fields[14] = Number(result.times.total, "%.6f");
+  }
+  rows_.push_back(JoinRow(fields));
 }
 
 void GeometryCsv::AddFailure(const std::string& frame, const Status& status,
