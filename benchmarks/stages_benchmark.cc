@@ -28,6 +28,7 @@
 #include "perception/junction_tracker.h"
 #include "perception/line_segments.h"
 #include "pipeline/inner_line_check.h"
+#include "pipeline/plausibility.h"
 #include "pipeline/recover_depth.h"
 
 namespace corridor {

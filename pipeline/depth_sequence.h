@@ -6,9 +6,7 @@
 
 #include "core/camera.h"
 #include "core/status.h"
-#include "perception/junction_tracker.h"
 #include "pipeline/recover_depth.h"
-#include "pipeline/sequence_prior.h"
 
 namespace corridor {
 
@@ -19,6 +17,7 @@ class DepthSequence {
  public:
   // Checks the options and creates the recoverer; InvalidArgument on a bad option.
   static Status Create(const RecoverDepthOptions& options, std::unique_ptr<DepthSequence>* sequence);
+  ~DepthSequence();
 
   // The next frame of the stream. Returns result->status.
   Status Process(const cv::Mat& image, const Camera& camera, RecoverDepthResult* result);
@@ -29,12 +28,11 @@ class DepthSequence {
   const RecoverDepthOptions& options() const { return recoverer_->options(); }
 
  private:
-  explicit DepthSequence(std::unique_ptr<DepthRecoverer> recoverer)
-      : recoverer_(std::move(recoverer)) {}
+  struct Carried;  // The junction track and the sequence prior (depth_sequence.cc).
+  DepthSequence(std::unique_ptr<DepthRecoverer> recoverer, std::unique_ptr<Carried> carried);
 
   std::unique_ptr<DepthRecoverer> recoverer_;
-  JunctionTrack track_;
-  SequencePrior prior_;
+  std::unique_ptr<Carried> carried_;
 };
 
 }  // namespace corridor

@@ -65,4 +65,29 @@ double FrameConfidence(const FrameEvidence& e, std::string* why) {
   return std::clamp(confidence, 0.0, 1.0);
 }
 
+FrameEvidence GatherFrameEvidence(const JunctionPair& junctions, const WorkingImage& search,
+                                  const CorridorGeometry& geometry, double ceiling_disagreement,
+                                  bool corrected, int moved_side,
+                                  const VerticalCrossingOptions& options) {
+  FrameEvidence evidence;
+  const JunctionLine* lines[2] = {nullptr, nullptr};
+  if (junctions.status.ok()) {
+    lines[0] = &junctions.left, lines[1] = &junctions.right;
+  } else if (junctions.has_single) {
+    lines[junctions.single_is_left ? 0 : 1] = &junctions.single;
+  }
+  for (int s = 0; s < 2; ++s) {
+    if (lines[s] == nullptr) continue;
+    evidence.junction[s] = lines[s]->confidence;
+    if (!search.bgr.empty()) {
+      evidence.crossings[s] = CountVerticalCrossings(search.bgr, search.camera, search.scale,
+                                                     geometry, *lines[s], options);
+    }
+  }
+  evidence.ceiling_disagreement = ceiling_disagreement;
+  evidence.corrected = corrected;
+  evidence.moved_side = moved_side;
+  return evidence;
+}
+
 }  // namespace corridor

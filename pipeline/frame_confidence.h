@@ -2,7 +2,10 @@
 
 #include <string>
 
+#include "core/corridor_geometry.h"
+#include "perception/junction_lines.h"
 #include "perception/vertical_crossings.h"
+#include "perception/working_image.h"
 
 namespace corridor {
 
@@ -32,5 +35,14 @@ struct FrameEvidence {
 // "Frame confidence"). `why` (may be null) receives the weakest factor's reason, for a refusal's
 // message.
 double FrameConfidence(const FrameEvidence& evidence, std::string* why = nullptr);
+
+// The evidence for a frame's geometry: the junction lines' own confidence (the one line, when one
+// junction is hidden), the vertical edges crossing them, counted on `search` (the frame at the
+// search resolution; none when it is empty), and what the reconstruction did (the ceiling sides'
+// disagreement, -1 when not compared; a correction; the wall the inner-line check moved).
+FrameEvidence GatherFrameEvidence(const JunctionPair& junctions, const WorkingImage& search,
+                                  const CorridorGeometry& geometry, double ceiling_disagreement,
+                                  bool corrected, int moved_side,
+                                  const VerticalCrossingOptions& options);
 
 }  // namespace corridor

@@ -9,19 +9,19 @@
 #include "core/corridor_geometry.h"
 #include "core/status.h"
 #include "depth/rasterizer.h"
-#include "estimation/corridor_observation.h"
 #include "estimation/solver.h"
 #include "perception/ceiling_detector.h"
 #include "perception/end_wall_detector.h"
 #include "perception/junction_detector.h"
 #include "perception/junction_lines.h"
 #include "perception/junction_tracker.h"
-#include "perception/working_image.h"
 #include "perception/vertical_crossings.h"
 #include "pipeline/frame_confidence.h"
 #include "pipeline/inner_line_check.h"
 
 namespace corridor {
+
+struct FrameHandover;
 
 // Everything RecoverDepth can be told. The defaults just work on a calibrated corridor image.
 struct RecoverDepthOptions {
@@ -99,11 +99,14 @@ struct RecoverDepthResult {
   bool ReadyToReconstruct() const {
     return status.ok() || (junctions.has_single && status.code() == StatusCode::kNoCorridorFound);
   }
-  cv::Mat image;        // The frame as 8-bit BGR (set by Detect, used by Reconstruct).
-  Camera camera;        // The frame's camera (set by Detect; for drawing the geometry).
-  WorkingImage search;  // The frame halved to search_max_width, when Detect halved it for the junction search too (from that halving; else empty).
-  cv::Mat depth;        // CV_32F metres, camera-frame z, NaN = no estimate.
-  StageTimes times;     // Per-stage wall time.
+  // Adds how the geometry came about to `fallback` ("; " between notes).
+  void AddNote(const std::string& how) { fallback += (fallback.empty() ? "" : "; ") + how; }
+  Camera camera;     // The frame's camera (the intrinsics the frame was recovered with).
+  cv::Mat depth;     // CV_32F metres, camera-frame z, NaN = no estimate.
+  StageTimes times;  // Per-stage wall time.
+  // What Detect hands to Reconstruct (the frame as BGR, its search image): internal state, not an
+  // output (pipeline/frame_handover.h).
+  std::shared_ptr<const FrameHandover> handover;
 };
 
 // Recovers depth frame after frame with one solver and one rasteriser, created once.
@@ -142,28 +145,6 @@ class DepthRecoverer {
  private:
   DepthRecoverer(const RecoverDepthOptions& options, std::unique_ptr<CorridorSolver> solver,
                  std::unique_ptr<DepthRasterizer> rasterizer);
-  // The ceiling search on `search` for the walls of *geometry into *estimate; the geometry's
-  // ceiling height becomes the one found (RecoverDepthOptions::ceiling_height when none is).
-  // `edges`: the frame's edges of the search image, shared by its searches.
-  Status SearchCeiling(const WorkingImage& search, ImageEdges* edges, CorridorGeometry* geometry,
-                       CeilingEstimate* estimate) const;
-  // ceiling_checks_baseboards: when both ceiling junctions were searched alone and disagree (or
-  // were too weak to compare), and a side has a lower parallel line, the geometry and ceiling with
-  // that line instead, if they make the two agree. Updates *geometry and *result (junctions,
-  // solver summary, ceiling).
-  // `search` is the image and camera the ceiling search runs on (search_max_width); `edges` the
-  // frame's edges of it, shared by its searches.
-  // True when a lower line was taken.
-  bool CheckBaseboards(const Camera& camera, const WorkingImage& search, ImageEdges* edges,
-                       CorridorGeometry* geometry, RecoverDepthResult* result) const;
-
-  // ceiling_checks_inner_lines: unless both ceiling junctions agree already, the inner-line check
-  // (inner_line_check.h) on the search image; a moved wall updates *geometry, the ceiling and the
-  // fallback note. In a sequence (`previous` not null) the move must bring the width nearer the
-  // previous frame's. Fails only when the ceiling search does.
-  Status MoveInnerWall(const WorkingImage& search, ImageEdges* edges,
-                       const CorridorGeometry* previous, CorridorGeometry* geometry,
-                       RecoverDepthResult* result) const;
 
   const RecoverDepthOptions options_;
   const std::unique_ptr<CorridorSolver> solver_;
@@ -173,20 +154,5 @@ class DepthRecoverer {
 // One-shot convenience: image + camera -> depth. Returns result->status.
 Status RecoverDepth(const cv::Mat& image, const Camera& camera, const RecoverDepthOptions& options,
                     RecoverDepthResult* result);
-
-// The solvers' input from detected junctions: n points along each line, undistorted to ideal
-// pixels, with the camera's intrinsics and height.
-CorridorObservation ObservationFromJunctions(const JunctionPair& junctions, const Camera& camera,
-                                             int points_per_line);
-
-// Is the estimate a corridor? kImplausibleGeometry with the reason otherwise.
-Status CheckPlausible(const CorridorGeometry& geometry, const RecoverDepthOptions& options);
-
-// Does the estimate explain the junctions it was fitted to? kImplausibleGeometry when the RMS
-// pixel distance of the observation's points to the junction lines the geometry predicts exceeds
-// options.max_line_error times the camera's image diagonal: the lines fit no corridor (parallel,
-// meeting below the points) or the solver stopped at the edge of its search range.
-Status CheckLineFit(const CorridorGeometry& geometry, const CorridorObservation& observation,
-                    const Camera& camera, const RecoverDepthOptions& options);
 
 }  // namespace corridor

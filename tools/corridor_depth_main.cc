@@ -26,6 +26,7 @@
 #include "pipeline/confidence_mask.h"
 #include "pipeline/floor_mask.h"
 #include "pipeline/frame_pipeline.h"
+#include "pipeline/image_input.h"
 #include "pipeline/recover_depth.h"
 #include "pipeline/visualization.h"
 #include "tools/frame_source.h"
@@ -105,10 +106,11 @@ Status WriteFrame(const fs::path& scene_dir, const PipelineFrame& frame, const R
                            PredictFloorMask(*frame.camera, result.geometry, FLAGS_max_range));
       if (!written.ok()) return written;
     }
-    if (FLAGS_write_model_fit && !result.image.empty()) {
+    cv::Mat bgr;
+    if (FLAGS_write_model_fit && ToBgr(frame.image, *frame.camera, &bgr).ok()) {
       const Status written = WriteImageAtomic(
           (scene_dir / "model_fit" / (frame.name + ".png")).string(),
-          ComputeConfidenceMask(result.image, result.depth, *frame.camera, result.geometry));
+          ComputeConfidenceMask(bgr, result.depth, *frame.camera, result.geometry));
       if (!written.ok()) return written;
     }
   }

@@ -12,6 +12,7 @@
 #include <glog/logging.h>
 
 #include "io/image_io.h"
+#include "pipeline/plausibility.h"
 #include "pipeline/recover_depth.h"
 #include "tools/compare/compare_report.h"
 #include "tools/compare/synthetic_junctions.h"

@@ -12,6 +12,7 @@
 
 #include "core/camera.h"
 #include "io/camera_yaml.h"
+#include "pipeline/plausibility.h"
 #include "pipeline/recover_depth.h"
 #include "tests/fuzz/fuzz_input.h"
 

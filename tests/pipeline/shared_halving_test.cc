@@ -10,6 +10,7 @@
 
 #include "perception/junction_detector.h"
 #include "perception/working_image.h"
+#include "pipeline/frame_handover.h"
 #include "pipeline/recover_depth.h"
 #include "synth/corridor_renderer.h"
 #include "tests/support/corridor_frame.h"
@@ -33,15 +34,17 @@ TEST_P(SharedHalvingTest, SearchImageIsTheFramesOwnHalving) {
 
   // 1280 px halve to 640 for the junctions; 640 or 480 px ask for one or two halvings.
   const int expected_scale = GetParam() >= 640 ? 2 : 4;
-  EXPECT_EQ(result.search.scale, expected_scale);
-  EXPECT_EQ(result.search.bgr.cols, 1280 / expected_scale);
+  ASSERT_NE(result.handover, nullptr);
+  const WorkingImage& search = result.handover->search;
+  EXPECT_EQ(search.scale, expected_scale);
+  EXPECT_EQ(search.bgr.cols, 1280 / expected_scale);
   const WorkingImage direct = HalveToWidth(frame.bgr, camera, options.search_max_width);
-  ASSERT_EQ(direct.bgr.size(), result.search.bgr.size());
-  EXPECT_EQ(cv::norm(direct.bgr, result.search.bgr, cv::NORM_INF), 0.0);
-  EXPECT_EQ(direct.camera.fx, result.search.camera.fx);
-  EXPECT_EQ(direct.camera.cx, result.search.camera.cx);
-  EXPECT_EQ(direct.camera.cy, result.search.camera.cy);
-  EXPECT_EQ(direct.camera.image_width, result.search.camera.image_width);
+  ASSERT_EQ(direct.bgr.size(), search.bgr.size());
+  EXPECT_EQ(cv::norm(direct.bgr, search.bgr, cv::NORM_INF), 0.0);
+  EXPECT_EQ(direct.camera.fx, search.camera.fx);
+  EXPECT_EQ(direct.camera.cx, search.camera.cx);
+  EXPECT_EQ(direct.camera.cy, search.camera.cy);
+  EXPECT_EQ(direct.camera.image_width, search.camera.image_width);
 
   JunctionPair own;
   ASSERT_TRUE(DetectJunctions(frame.bgr, options.perception, &own).ok());

@@ -10,6 +10,7 @@
 #include <limits>
 
 #include "estimation/closed_form.h"
+#include "pipeline/plausibility.h"
 #include "pipeline/recover_depth.h"
 #include "tests/support/exact_observation.h"
 

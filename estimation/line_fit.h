@@ -1,0 +1,15 @@
+#pragma once
+
+#include "core/corridor_geometry.h"
+#include "estimation/corridor_observation.h"
+
+namespace corridor {
+
+// How well a geometry explains the junction points it was fitted to: the RMS perpendicular pixel
+// distance of the observation's points to the two junction lines the geometry projects
+// (JunctionLineResidual). False when a line is undefined for the geometry or a distance is not
+// finite; *rms is then meaningless.
+bool JunctionLineRms(const CorridorGeometry& geometry, const CorridorObservation& observation,
+                     double* rms);
+
+}  // namespace corridor

@@ -1,0 +1,20 @@
+#pragma once
+
+#include <opencv2/core.hpp>
+
+#include "core/camera.h"
+#include "core/status.h"
+
+namespace corridor {
+
+// The input image as 8-bit BGR: 8- or 16-bit, grey, grey+alpha, BGR or BGRA, of the camera's
+// size; InvalidArgument naming what is wrong otherwise. Shares the data when it is 8-bit BGR.
+Status ToBgr(const cv::Mat& image, const Camera& camera, cv::Mat* bgr);
+
+// Builds OpenCV's colour-conversion tables once, before frames are recovered concurrently.
+void BuildOpenCvTablesOnce();
+
+// The rasterisers write 0 where they have no estimate; the pipeline's depth says so with NaN.
+void MarkNoEstimateNaN(cv::Mat* depth);
+
+}  // namespace corridor

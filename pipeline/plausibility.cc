@@ -1,0 +1,62 @@
+#include "pipeline/plausibility.h"
+
+#include <cmath>
+#include <sstream>
+#include <vector>
+
+#include "estimation/line_fit.h"
+
+namespace corridor {
+namespace {
+
+// Points along a junction line, in ideal (undistorted) pixels.
+std::vector<Eigen::Vector2d> IdealSamples(const JunctionLine& line, int n, const Camera& camera) {
+  std::vector<Eigen::Vector2d> points = SampleAlongLine(line, n);
+  for (auto& p : points) p = camera.Undistort(p);
+  return points;
+}
+
+}  // namespace
+
+CorridorObservation ObservationFromJunctions(const JunctionPair& junctions, const Camera& camera,
+                                             int points_per_line) {
+  CorridorObservation observation = CorridorObservation::FromCamera(camera);
+  observation.left = IdealSamples(junctions.left, points_per_line, camera);
+  observation.right = IdealSamples(junctions.right, points_per_line, camera);
+  return observation;
+}
+
+Status CheckPlausible(const CorridorGeometry& g, const RecoverDepthOptions& options) {
+  std::ostringstream msg;
+  if (!std::isfinite(g.yaw) || !std::isfinite(g.pitch) || !std::isfinite(g.offset) ||
+      !std::isfinite(g.width)) {
+    msg << "non-finite estimate";
+  } else if (g.width < options.min_width || g.width > options.max_width) {
+    msg << "width " << g.width << " m is outside [" << options.min_width << ", "
+        << options.max_width << "] m";
+  } else if (std::abs(g.yaw) > options.max_abs_yaw) {
+    msg << "yaw " << g.yaw << " rad is beyond +-" << options.max_abs_yaw << " rad";
+  } else if (std::abs(g.pitch) > options.max_abs_pitch) {
+    msg << "pitch " << g.pitch << " rad is beyond +-" << options.max_abs_pitch << " rad";
+  } else if (g.LeftDistance() <= 0 || g.RightDistance() <= 0) {
+    msg << "the camera is not between the walls (offset " << g.offset << " m, width " << g.width
+        << " m)";
+  } else {
+    return Status::Ok();
+  }
+  return Status::ImplausibleGeometry(msg.str());
+}
+
+Status CheckLineFit(const CorridorGeometry& g, const CorridorObservation& observation,
+                    const Camera& camera, const RecoverDepthOptions& options) {
+  double rms = 0;
+  const bool defined = JunctionLineRms(g, observation, &rms);
+  const double limit = options.max_line_error * std::hypot(camera.image_width, camera.image_height);
+  if (defined && rms <= limit) return Status::Ok();
+  std::ostringstream msg;
+  msg << "the estimate does not explain the junction lines (points " << rms
+      << " px RMS from the predicted lines, limit " << limit << " px)";
+  return Status::ImplausibleGeometry(msg.str());
+}
+
+}  // namespace corridor

@@ -1,0 +1,27 @@
+#pragma once
+
+#include "core/camera.h"
+#include "core/corridor_geometry.h"
+#include "core/status.h"
+#include "estimation/corridor_observation.h"
+#include "perception/junction_lines.h"
+#include "pipeline/recover_depth.h"
+
+namespace corridor {
+
+// The solvers' input from detected junctions: n points along each line, undistorted to ideal
+// pixels, with the camera's intrinsics and height.
+CorridorObservation ObservationFromJunctions(const JunctionPair& junctions, const Camera& camera,
+                                             int points_per_line);
+
+// Is the estimate a corridor? kImplausibleGeometry with the reason otherwise.
+Status CheckPlausible(const CorridorGeometry& geometry, const RecoverDepthOptions& options);
+
+// Does the estimate explain the junctions it was fitted to? kImplausibleGeometry when the RMS
+// pixel distance of the observation's points to the junction lines the geometry predicts exceeds
+// options.max_line_error times the camera's image diagonal: the lines fit no corridor (parallel,
+// meeting below the points) or the solver stopped at the edge of its search range.
+Status CheckLineFit(const CorridorGeometry& geometry, const CorridorObservation& observation,
+                    const Camera& camera, const RecoverDepthOptions& options);
+
+}  // namespace corridor

@@ -1,0 +1,82 @@
+#include "pipeline/sequence_holds.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "pipeline/ceiling_agreement.h"
+
+namespace corridor {
+
+bool MuchNarrower(const CorridorGeometry& previous, double max_change, const CorridorGeometry& g) {
+  return max_change > 0 && previous.width > 0 && g.width < (1 - max_change) * previous.width;
+}
+
+void HoldWidth(const CorridorGeometry& previous, double max_change, CorridorGeometry* g,
+               RecoverDepthResult* result) {
+  if (!MuchNarrower(previous, max_change, *g)) return;
+  const bool keep_left = std::abs(g->LeftDistance() - previous.LeftDistance()) <=
+                         std::abs(g->RightDistance() - previous.RightDistance());
+  const double kept = keep_left ? g->LeftDistance() : g->RightDistance();
+  const double other = previous.width - kept;
+  if (!(other > 0.05)) return;  // The kept wall is beyond the previous width: nothing to hold.
+  std::ostringstream how;
+  how.precision(2);
+  how << std::fixed << "width " << g->width << " m is much narrower than the previous frame's "
+      << previous.width << " m: the " << (keep_left ? "left" : "right")
+      << " wall kept, the previous width held";
+  g->offset = keep_left ? kept - 0.5 * previous.width : 0.5 * previous.width - kept;
+  g->width = previous.width;
+  result->width_held = true;
+  result->AddNote(how.str());
+}
+
+void HoldCeiling(const CorridorGeometry* previous, double max_disagreement, double min_support,
+                 CorridorGeometry* g, RecoverDepthResult* result) {
+  const double disagreement = CeilingDisagreement(result->ceiling, g->camera_height, min_support);
+  const bool found = result->ceiling.found && g->HasCeiling();
+  result->ceiling_trusted = found && disagreement >= 0 && disagreement <= max_disagreement;
+  if (!(max_disagreement > 0) || previous == nullptr || !previous->HasCeiling()) return;
+  if (result->ceiling_trusted) return;
+  const CorridorGeometry& held = *previous;
+  std::ostringstream how;
+  how.precision(2);
+  how << std::fixed;
+  if (found && disagreement >= 0) {
+    how << "ceiling sides at " << result->ceiling.side_height[0] << " and "
+        << result->ceiling.side_height[1] << " m disagree";
+  } else {
+    how << (found ? "ceiling sides too weak to compare" : "no ceiling found");
+  }
+  how << ": the previous frame's " << held.ceiling_height << " m held";
+  g->ceiling_height = held.ceiling_height;
+  result->ceiling_held = true;
+  result->AddNote(how.str());
+}
+
+void ScaleWallsToCeiling(const CorridorGeometry& previous, double max_change, CorridorGeometry* g,
+                         RecoverDepthResult* result) {
+  if (!(max_change > 0) || !previous.HasCeiling() || !result->ceiling_trusted ||
+      result->width_held || !(previous.width > 0) || !(g->width > 0)) {
+    return;
+  }
+  const double above_previous = previous.ceiling_height - g->camera_height;
+  const double above = g->ceiling_height - g->camera_height;
+  if (!(above_previous > 0.1) || !(above > 0.1)) return;
+  const double factor = above_previous / above;
+  const double width_factor = previous.width / g->width;
+  if (std::abs(std::log(factor)) <= std::log(1 + max_change) ||
+      std::abs(std::log(width_factor / factor)) > std::log(1.15)) {
+    return;
+  }
+  std::ostringstream how;
+  how.precision(2);
+  how << std::fixed << "both walls scaled " << factor << "x: both ceiling sides at "
+      << g->ceiling_height << " m against the previous frame's " << previous.ceiling_height
+      << " m (and the width alike): both junctions wrong alike";
+  g->SetWallDistances(factor * g->LeftDistance(), factor * g->RightDistance());
+  g->ceiling_height = previous.ceiling_height;
+  result->walls_scaled = true;
+  result->AddNote(how.str());
+}
+
+}  // namespace corridor

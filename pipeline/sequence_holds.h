@@ -1,0 +1,39 @@
+#pragma once
+
+#include "core/corridor_geometry.h"
+#include "pipeline/recover_depth.h"
+
+namespace corridor {
+
+// The sequence policy: what a frame takes from the previous frames' geometry (SequencePrior).
+// Each adds a note to result->fallback when it changes the geometry.
+
+// In a sequence, a width much narrower than the previous frame's (max_change) means that one
+// junction is wrong (a box edge or a grout line taken for it). Only a narrower width: the lines
+// mistaken for a junction lie inside the floor, while a wider width is as often the correction of
+// an earlier mistake.
+bool MuchNarrower(const CorridorGeometry& previous, double max_change, const CorridorGeometry& g);
+
+// Holds such a width: the wall that moved less since the previous frame stays, and the other one
+// is put at the previous width from it (result->width_held).
+void HoldWidth(const CorridorGeometry& previous, double max_change, CorridorGeometry* g,
+               RecoverDepthResult* result);
+
+// The ceiling is as constant as the width: a frame whose ceiling is not trusted (not found, its
+// two sides too weak to compare, or disagreeing because a wall distance is wrong and so its
+// side's height) takes the previous trusted height (result->ceiling_held). Sets
+// result->ceiling_trusted in every case. `previous` (may be null) carries a ceiling only when one
+// was trusted (SequencePrior).
+void HoldCeiling(const CorridorGeometry* previous, double max_disagreement, double min_support,
+                 CorridorGeometry* g, RecoverDepthResult* result);
+
+// A ceiling whose two sides agree (trusted) but whose height above the camera is far from the last
+// trusted one's, with the width off by the same factor: both walls were put wrong by that factor
+// (lines inside the floor on both sides, as boxes' edges are, put both walls too near, and their
+// two ceiling sides, each scaled alike, agree with each other). The corridor's ceiling does not
+// change along it, and a corridor that narrows keeps its ceiling: both walls are scaled to the
+// trusted ceiling (result->walls_scaled).
+void ScaleWallsToCeiling(const CorridorGeometry& previous, double max_change, CorridorGeometry* g,
+                         RecoverDepthResult* result);
+
+}  // namespace corridor

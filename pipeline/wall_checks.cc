@@ -1,0 +1,130 @@
+#include "pipeline/wall_checks.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include <Eigen/Geometry>
+
+#include "pipeline/ceiling_agreement.h"
+#include "pipeline/inner_line_check.h"
+#include "pipeline/plausibility.h"
+
+namespace corridor {
+
+Status SearchCeiling(const WallCheckInputs& in, CorridorGeometry* geometry,
+                     CeilingEstimate* estimate) {
+  const Status status = DetectCeiling(in.search.bgr, in.search.camera, *geometry,
+                                      in.options.ceiling, estimate, in.edges);
+  if (status.ok()) {
+    geometry->ceiling_height = estimate->found ? estimate->height : in.options.ceiling_height;
+  }
+  return status;
+}
+
+bool CheckBaseboards(const WallCheckInputs& in, CorridorGeometry* geometry,
+                     RecoverDepthResult* result) {
+  const RecoverDepthOptions& options = in.options;
+  // Heights that agree within 6% need no check; a lower line must bring them within 8%, and to
+  // less than half the disagreement.
+  // Without two sides strong enough to compare (as when the upper line has skewed the whole
+  // geometry, so that neither ceiling junction is where it is sought), a lower line must find
+  // both, each with the ceiling search's own minimum support, agreeing within 3%: two weak
+  // searches that agree that closely do not do so by chance.
+  const double agree = std::log(kCeilingSidesAgree), accept = std::log(1.08),
+               weak_accept = std::log(1.03);
+  const double before = CeilingDisagreement(result->ceiling, geometry->camera_height);
+  if (before >= 0 && before <= agree) return false;
+  const bool compared = before >= 0;
+  // A lower line must also halve `best` (the disagreement so far); without a comparison it starts
+  // at twice weak_accept, so that only the weak_accept bound applies to the first one.
+  double best = compared ? before : 2 * weak_accept;
+  int best_side = -1;
+  CorridorGeometry best_geometry;
+  SolverSummary best_summary;
+  CeilingEstimate best_ceiling;
+  for (int side = 0; side < 2; ++side) {
+    const JunctionPair& found = result->junctions;
+    if (!(side == 0 ? found.has_left_lower : found.has_right_lower)) continue;
+    JunctionPair pair = result->junctions;
+    (side == 0 ? pair.left : pair.right) = side == 0 ? pair.left_lower : pair.right_lower;
+    const CorridorObservation observation =
+        ObservationFromJunctions(pair, in.camera, options.points_per_line);
+    SolverSummary summary;
+    if (!in.solver.Solve(observation, nullptr, &summary).ok()) continue;
+    CorridorGeometry g = summary.estimate;
+    g.camera_height = in.camera.mount_height;
+    if (!CheckPlausible(g, options).ok() ||
+        !CheckLineFit(g, observation, in.camera, options).ok()) {
+      continue;
+    }
+    CeilingEstimate ceiling;
+    if (!DetectCeiling(in.search.bgr, in.search.camera, g, options.ceiling, &ceiling, in.edges)
+             .ok()) {
+      continue;
+    }
+    const double after =
+        compared ? CeilingDisagreement(ceiling, g.camera_height)
+                 : CeilingDisagreement(ceiling, g.camera_height, options.ceiling.min_support);
+    if (after < 0 || after > (compared ? accept : weak_accept) || after > 0.5 * best) continue;
+    best = after;
+    best_side = side;
+    best_geometry = g;
+    best_summary = summary;
+    best_ceiling = ceiling;
+  }
+  if (best_side < 0) return false;
+  JunctionPair& pair = result->junctions;
+  if (best_side == 0) {
+    pair.left = pair.left_lower;
+  } else {
+    pair.right = pair.right_lower;
+  }
+  const Eigen::Vector3d vp = pair.left.line.cross(pair.right.line);
+  if (std::abs(vp.z()) > 1e-12) pair.vanishing_point = vp.head<2>() / vp.z();
+  result->solver_summary = best_summary;
+  result->ceiling = best_ceiling;
+  best_geometry.ceiling_height = best_ceiling.height;
+  *geometry = best_geometry;
+  result->AddNote(std::string(best_side == 0 ? "left" : "right") +
+                  " junction: the lower of two parallel lines (the upper one a baseboard's "
+                  "top or a recess's floor line), with which both ceiling junctions agree");
+  return true;
+}
+
+Status MoveInnerWall(const WallCheckInputs& in, const CorridorGeometry* previous,
+                     CorridorGeometry* geometry, RecoverDepthResult* result) {
+  const RecoverDepthOptions& options = in.options;
+  // Both ceiling junctions found where the walls put them, agreeing: nothing to check. Neither
+  // found: no side to trust (the trusted one must be in the ceiling search's range).
+  const CeilingEstimate& found = result->ceiling;
+  const double disagreement = CeilingDisagreement(found, geometry->camera_height);
+  if ((disagreement >= 0 &&
+       disagreement <= std::log(1 + MinInnerLineDisagreement(options.inner_line))) ||
+      std::max(found.side_visible_support[0], found.side_visible_support[1]) <
+          options.inner_line.min_support) {
+    return Status::Ok();
+  }
+  CorridorGeometry moved = *geometry;
+  const InnerLineCheck check =
+      CheckInnerLine(in.search.bgr, in.search.camera, options.ceiling, options.inner_line, &moved,
+                     in.edges, {result->junctions.has_left_lower, result->junctions.has_right_lower});
+  if (!check.moved || !CheckPlausible(moved, options).ok()) return Status::Ok();
+  // In a sequence the previous frame's width must agree better with the moved wall than with the
+  // line it replaces (a misjudged side would otherwise carry on through the width hold).
+  if (previous != nullptr && previous->width > 0 &&
+      std::abs(std::log(moved.width / previous->width)) >=
+          std::abs(std::log(geometry->width / previous->width))) {
+    return Status::Ok();
+  }
+  CeilingEstimate ceiling;
+  const Status status = SearchCeiling(in, &moved, &ceiling);
+  if (!status.ok()) return status;
+  result->ceiling = ceiling;
+  *geometry = moved;
+  result->moved_side = check.side;
+  result->AddNote(DescribeInnerLineCheck(check));
+  return Status::Ok();
+}
+
+}  // namespace corridor

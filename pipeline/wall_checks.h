@@ -1,0 +1,44 @@
+#pragma once
+
+#include "core/camera.h"
+#include "core/corridor_geometry.h"
+#include "core/status.h"
+#include "estimation/solver.h"
+#include "perception/ceiling_detector.h"
+#include "perception/oriented_edges.h"
+#include "perception/working_image.h"
+#include "pipeline/recover_depth.h"
+
+namespace corridor {
+
+// The wall corrections that the ceiling's evidence allows (beyond the paper), run by
+// DepthRecoverer::Reconstruct after the solver. They work on the frame's search image (the frame
+// halved to search_max_width) and share its edges.
+struct WallCheckInputs {
+  const RecoverDepthOptions& options;  // The recoverer's options.
+  const CorridorSolver& solver;        // The recoverer's solver (the baseboard check solves again).
+  const Camera& camera;                // The frame's camera at full resolution.
+  const WorkingImage& search;          // The search image and its camera.
+  ImageEdges* edges;                   // The search image's edges, computed on demand and shared.
+};
+
+// The ceiling search for the walls of *geometry into *estimate; the geometry's ceiling height
+// becomes the one found (options.ceiling_height when none is).
+Status SearchCeiling(const WallCheckInputs& in, CorridorGeometry* geometry,
+                     CeilingEstimate* estimate);
+
+// ceiling_checks_baseboards: when both ceiling junctions were searched alone and disagree (or were
+// too weak to compare), and a side has a lower parallel line, the geometry and ceiling with that
+// line instead, if they make the two agree. Updates *geometry and *result (junctions, solver
+// summary, ceiling, note). True when a lower line was taken.
+bool CheckBaseboards(const WallCheckInputs& in, CorridorGeometry* geometry,
+                     RecoverDepthResult* result);
+
+// ceiling_checks_inner_lines: unless both ceiling junctions agree already, the inner-line check
+// (inner_line_check.h); a moved wall updates *geometry, the ceiling, result->moved_side and the
+// note. In a sequence (`previous` not null) the move must bring the width nearer the previous
+// frame's. Fails only when the ceiling search does.
+Status MoveInnerWall(const WallCheckInputs& in, const CorridorGeometry* previous,
+                     CorridorGeometry* geometry, RecoverDepthResult* result);
+
+}  // namespace corridor
