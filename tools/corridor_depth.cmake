@@ -7,8 +7,8 @@ corridor_add_library(corridor_tool_support
     ${CMAKE_CURRENT_LIST_DIR}/focal_auto.h ${CMAKE_CURRENT_LIST_DIR}/frame_source.h
     ${CMAKE_CURRENT_LIST_DIR}/geometry_csv.h
     ${CMAKE_CURRENT_LIST_DIR}/input_source.h ${CMAKE_CURRENT_LIST_DIR}/tool_flags.h
-  DEPS corridor_tool_help corridor_pipeline corridor_io corridor_depth_planes gflags::gflags
-       opencv_videoio)
+  DEPS corridor_tool_help corridor_evaluation corridor_pipeline corridor_io corridor_depth_planes
+       gflags::gflags opencv_videoio)
 # Bag input and --output_bag when ROS 1 support is built.
 if(CORRIDOR_WITH_ROSBAG)
   target_link_libraries(corridor_tool_support PUBLIC corridor_rosbag)

@@ -11,17 +11,19 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <set>
 #include <utility>
 
+#include "evaluation/eval_runner.h"
+#include "evaluation/report_builder.h"
+#include "evaluation/report_tables.h"
 #include "io/image_io.h"
-#include "tools/eval/eval_runner.h"
 #include "tools/eval/html_report.h"
 #include "tools/eval/plots.h"
-#include "tools/eval/report_builder.h"
-#include "tools/eval/report_tables.h"
 #include "tools/eval/report_writers.h"
 #include "tools/input_source.h"
+#include "tools/progress.h"
 #include "tools/tool_flags.h"
 #include "tools/tool_help.h"
 
@@ -123,6 +125,21 @@ void PrintSummary(const EvalReport& r) {
   std::printf("\n");
 }
 
+// The library's scenes for the tool's: a scene of image files keeps its frames and camera
+// (with the per-image field of view); a bag or a video has no image files, so no frames.
+std::vector<EvalScene> ToEvalScenes(const std::vector<InputScene>& inputs) {
+  std::vector<EvalScene> scenes;
+  for (const InputScene& input : inputs) {
+    EvalScene scene;
+    scene.name = input.name;
+    scene.camera = input.camera;
+    if (input.kind == InputKind::kImages) scene.frames = input.frames;
+    scene.per_image_hfov_deg = input.per_image_hfov_deg;
+    scenes.push_back(std::move(scene));
+  }
+  return scenes;
+}
+
 ToolInfo EvalToolInfo() {
   ToolInfo info;
   info.name = "corridor_eval";
@@ -175,14 +192,15 @@ int Main(int argc, char** argv) {
     status = DepthRecoverer::Create(options, &recoverers[c]);
     if (!status.ok()) return Usage(status.message());
   }
-  std::vector<InputScene> scenes;
-  status = ResolveInput(FLAGS_dataset, CameraOverridesFromFlags(), &scenes);
+  std::vector<InputScene> inputs;
+  status = ResolveInput(FLAGS_dataset, CameraOverridesFromFlags(), &inputs);
   if (!status.ok()) return Usage(status.message());
   if (FLAGS_focal == "auto") {
-    for (const auto& scene : scenes) {
+    for (const auto& scene : inputs) {
       std::printf("%s: scene %s: %s\n", "corridor_eval", scene.name.c_str(), scene.camera_source.c_str());
     }
   }
+  const std::vector<EvalScene> scenes = ToEvalScenes(inputs);
   size_t total = 0;
   for (const auto& scene : scenes) total += scene.frames.size();
   if (total == 0) return Usage("no frames to evaluate in " + FLAGS_dataset);
@@ -195,9 +213,13 @@ int Main(int argc, char** argv) {
     options.write_vis = FLAGS_write_vis;
     options.vis_max_depth = FLAGS_vis_max_depth;
     options.vis_max_error = FLAGS_vis_max_error;
-    run_options.progress_label = configs[c].solver + ":" + configs[c].rasterizer;
+    Progress progress(configs[c].solver + ":" + configs[c].rasterizer, static_cast<int>(total));
+    run_options.progress = [&progress](size_t done, size_t) {
+      progress.Tick(static_cast<int>(done));
+    };
     std::vector<FrameRecord> records;
     status = EvaluateScenes(scenes, *recoverers[c], options, run_options, &records);
+    progress.Finish();
     if (!status.ok()) return Usage("cannot write output: " + status.ToString());
     reports.push_back(
         BuildReport(records, frame_options.caps, configs[c].solver, configs[c].rasterizer));

@@ -9,6 +9,7 @@
 #include <opencv2/core.hpp>
 #include <opencv2/videoio.hpp>
 
+#include "evaluation/eval_scene.h"
 #include "io/camera_yaml.h"
 #include "io/image_io.h"
 #ifdef CORRIDOR_HAVE_ROSBAG
@@ -289,10 +290,7 @@ Status ResolveInput(const std::string& input, const CameraOverrides& overrides,
 }
 
 Camera FrameCamera(const InputScene& scene, const cv::Size& image_size) {
-  if (!(scene.per_image_hfov_deg > 0)) return scene.camera;
-  return Camera::FromHorizontalFov(image_size.width, image_size.height,
-                                   scene.per_image_hfov_deg * M_PI / 180.0,
-                                   scene.camera.mount_height);
+  return PerImageCamera(scene.camera, scene.per_image_hfov_deg, image_size);
 }
 
 Status CheckFirstFrameSize(const InputScene& scene) {

@@ -7,7 +7,7 @@ corridor_add_library(corridor_compare_support
     ${CMAKE_CURRENT_LIST_DIR}/compare/compare_report.h
     ${CMAKE_CURRENT_LIST_DIR}/compare/solver_stats.h
     ${CMAKE_CURRENT_LIST_DIR}/compare/synthetic_junctions.h
-  DEPS corridor_eval_support corridor_tool_support corridor_estimation)
+  DEPS corridor_eval_writers corridor_tool_support corridor_estimation)
 corridor_add_executable(solver_compare
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/solver_compare_main.cc
   DEPS corridor_compare_support glog::glog)

@@ -1,9 +1,10 @@
 #pragma once
 
 // Test material of the robotics input/output tests: generated corridor frames (the
-// independent box ray caster of tests/depth/box_truth.h via tests/tools/eval_test_dataset.h), and
-// ROS 1 bags written from them by the real rosbag library (Debian's python3-rosbag, driven by
-// tests/robotics/write_test_bag.py), never by the code under test.
+// independent box ray caster of tests/depth/box_truth.h via
+// tests/evaluation/eval_test_dataset.h), and ROS 1 bags written from them by the real rosbag
+// library (Debian's python3-rosbag, driven by tests/robotics/write_test_bag.py), never by the
+// code under test.
 
 #include <cstdio>
 #include <string>
@@ -14,8 +15,8 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "tests/evaluation/eval_test_dataset.h"
 #include "tests/reliability/reliability_util.h"
-#include "tests/tools/eval_test_dataset.h"
 
 namespace corridor {
 namespace testing_util {

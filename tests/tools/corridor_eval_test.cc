@@ -13,7 +13,7 @@
 #include <iterator>
 #include <utility>
 
-#include "tests/tools/eval_test_dataset.h"
+#include "tests/evaluation/eval_test_dataset.h"
 
 namespace corridor {
 namespace {

@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "tests/tools/eval_test_records.h"
+#include "tests/evaluation/eval_test_records.h"
 
 namespace corridor {
 namespace {

@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <opencv2/imgcodecs.hpp>
 
-#include "tests/tools/eval_test_records.h"
+#include "tests/evaluation/eval_test_records.h"
 
 namespace corridor {
 namespace {

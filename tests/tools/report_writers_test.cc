@@ -5,7 +5,7 @@
 
 #include <sstream>
 
-#include "tests/tools/eval_test_records.h"
+#include "tests/evaluation/eval_test_records.h"
 
 namespace corridor {
 namespace {

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "tools/eval/report_builder.h"
+#include "evaluation/report_builder.h"
 
 namespace corridor {
 

@@ -3,8 +3,8 @@
 #include <cctype>
 #include <cstdio>
 
-#include "tools/eval/frame_evaluator.h"
-#include "tools/eval/report_tables.h"
+#include "evaluation/frame_evaluator.h"
+#include "evaluation/report_tables.h"
 
 namespace corridor {
 namespace {

@@ -4,9 +4,9 @@
 #include <cmath>
 #include <filesystem>
 
+#include "evaluation/report_tables.h"
 #include "io/image_io.h"
 #include "tools/eval/plot_canvas.h"
-#include "tools/eval/report_tables.h"
 
 namespace corridor {
 namespace {

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "core/status.h"
-#include "tools/eval/report_builder.h"
+#include "evaluation/report_builder.h"
 
 namespace corridor {
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "tools/eval/report_tables.h"
+#include "evaluation/report_tables.h"
 #include "tools/geometry_csv.h"
 
 namespace corridor {

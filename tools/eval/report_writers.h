@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "tools/eval/report_builder.h"
+#include "evaluation/report_builder.h"
 
 namespace corridor {
 

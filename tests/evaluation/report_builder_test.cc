@@ -1,10 +1,10 @@
-#include "tools/eval/report_builder.h"
+#include "evaluation/report_builder.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "tests/tools/eval_test_records.h"
+#include "tests/evaluation/eval_test_records.h"
 
 namespace corridor {
 namespace {

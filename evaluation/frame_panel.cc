@@ -1,4 +1,4 @@
-#include "tools/eval/frame_panel.h"
+#include "evaluation/frame_panel.h"
 
 #include <algorithm>
 #include <cstdio>

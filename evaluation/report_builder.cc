@@ -1,4 +1,4 @@
-#include "tools/eval/report_builder.h"
+#include "evaluation/report_builder.h"
 
 #include <algorithm>
 #include <cctype>

@@ -1,17 +1,27 @@
-#include "tools/eval/eval_runner.h"
+#include "evaluation/eval_runner.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <fstream>
 
+#include "io/dataset.h"
 #include "synth/presets.h"
-#include "tests/tools/eval_test_dataset.h"
+#include "tests/evaluation/eval_test_dataset.h"
 
 namespace corridor {
 namespace {
 
 using testing_util::EvalTestGeometry;
+
+// The scenes of a dataset root, as a research user loads them.
+std::vector<EvalScene> LoadScenes(const std::string& root) {
+  std::vector<DatasetScene> dataset;
+  EXPECT_TRUE(LoadDataset(root, &dataset).ok());
+  std::vector<EvalScene> scenes;
+  for (const DatasetScene& scene : dataset) scenes.push_back(EvalSceneFromDataset(scene));
+  return scenes;
+}
 
 // Equal, or both NaN.
 void ExpectSame(double a, double b, const std::string& what) {
@@ -66,8 +76,7 @@ TEST(EvaluateScenes, ASequenceHoldsAWidthThatNarrows) {
     found = true;
   }
   ASSERT_TRUE(found);
-  std::vector<InputScene> scenes;
-  ASSERT_TRUE(ResolveInput(dir.Path("data"), CameraOverrides(), &scenes).ok());
+  const std::vector<EvalScene> scenes = LoadScenes(dir.Path("data"));
   // Without the inner-line check, which finds frame 10's right wall on its own (its ceiling
   // junction): the sequence's width hold is what this test is about.
   RecoverDepthOptions options;
@@ -104,8 +113,7 @@ TEST(EvaluateScenes, SameNumbersForEveryThreadCount) {
       dir.Path("data"), "Cord_H01",
       {EvalTestGeometry(0.0, 0.06, 0.3, 3.0), EvalTestGeometry(0.2, 0.09, -0.1, 3.0)});
   std::ofstream(dir.Path("data/Cord_H01/rgb/001.png"), std::ios::trunc) << "broken";
-  std::vector<InputScene> scenes;
-  ASSERT_TRUE(ResolveInput(dir.Path("data"), CameraOverrides(), &scenes).ok());
+  const std::vector<EvalScene> scenes = LoadScenes(dir.Path("data"));
   ASSERT_EQ(scenes.size(), 2u);
   RecoverDepthOptions options;
   std::unique_ptr<DepthRecoverer> recoverer;

@@ -7,7 +7,7 @@
 
 #include "core/status.h"
 #include "evaluation/depth_metrics.h"
-#include "tools/eval/frame_evaluator.h"
+#include "evaluation/frame_evaluator.h"
 
 namespace corridor {
 

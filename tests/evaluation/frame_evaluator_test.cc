@@ -1,4 +1,4 @@
-#include "tools/eval/frame_evaluator.h"
+#include "evaluation/frame_evaluator.h"
 
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "tests/tools/eval_test_dataset.h"
+#include "tests/evaluation/eval_test_dataset.h"
 
 namespace corridor {
 namespace {
@@ -23,10 +23,10 @@ std::unique_ptr<DepthRecoverer> MakeRecoverer() {
 }
 
 // One scene "Cord_E01" with a real corridor frame 000 at the given pose.
-InputScene MakeScene(const EvalTempDir& dir) {
+EvalScene MakeScene(const EvalTempDir& dir) {
   testing_util::WriteEvalTestScene(dir.Path("data"), "Cord_E01",
                                    {testing_util::EvalTestGeometry(0.05, 0.08, 0.1, 2.1)});
-  InputScene scene;
+  EvalScene scene;
   scene.name = "Cord_E01";
   scene.camera = testing_util::EvalTestCamera();
   DatasetFrame frame;
@@ -53,7 +53,7 @@ TEST(AccumulateDepthBins, HandComputed) {
 
 TEST(FrameEvaluator, GoodFrameIsEvaluatedAndWritten) {
   EvalTempDir dir("frame");
-  const InputScene scene = MakeScene(dir);
+  const EvalScene scene = MakeScene(dir);
   FrameEvalOptions options;
   options.output_dir = dir.Path("out");
   FrameRecord record;
@@ -75,7 +75,7 @@ TEST(FrameEvaluator, GoodFrameIsEvaluatedAndWritten) {
 
 TEST(FrameEvaluator, UnreadableImageFailsWithCoverageZero) {
   EvalTempDir dir("frame");
-  InputScene scene = MakeScene(dir);
+  EvalScene scene = MakeScene(dir);
   std::ofstream(scene.frames[0].rgb_path, std::ios::trunc) << "not a png";
   FrameRecord record;
   ASSERT_TRUE(EvaluateFrame(scene, 0, *MakeRecoverer(), FrameEvalOptions(), &record).ok());
@@ -92,7 +92,7 @@ TEST(FrameEvaluator, UnreadableImageFailsWithCoverageZero) {
 
 TEST(FrameEvaluator, DepthSizeMismatchFails) {
   EvalTempDir dir("frame");
-  InputScene scene = MakeScene(dir);
+  EvalScene scene = MakeScene(dir);
   ASSERT_TRUE(cv::imwrite(scene.frames[0].depth_path, cv::Mat(10, 20, CV_16U, cv::Scalar(2000))));
   FrameRecord record;
   ASSERT_TRUE(EvaluateFrame(scene, 0, *MakeRecoverer(), FrameEvalOptions(), &record).ok());
@@ -105,7 +105,7 @@ TEST(FrameEvaluator, DepthSizeMismatchFails) {
 
 TEST(FrameEvaluator, NoCorridorFailsAndCountsAgainstCoverage) {
   EvalTempDir dir("frame");
-  InputScene scene = MakeScene(dir);
+  EvalScene scene = MakeScene(dir);
   ASSERT_TRUE(
       cv::imwrite(scene.frames[0].rgb_path, cv::Mat(240, 320, CV_8UC3, cv::Scalar(128, 128, 128))));
   FrameRecord record;
@@ -121,7 +121,7 @@ TEST(FrameEvaluator, NoCorridorFailsAndCountsAgainstCoverage) {
 
 TEST(FrameEvaluator, WithoutGroundTruthMetricsAreUnknown) {
   EvalTempDir dir("frame");
-  InputScene scene = MakeScene(dir);
+  EvalScene scene = MakeScene(dir);
   scene.frames[0].depth_path.clear();
   FrameRecord record;
   ASSERT_TRUE(EvaluateFrame(scene, 0, *MakeRecoverer(), FrameEvalOptions(), &record).ok());
@@ -129,6 +129,37 @@ TEST(FrameEvaluator, WithoutGroundTruthMetricsAreUnknown) {
   EXPECT_FALSE(record.has_depth_truth);
   EXPECT_TRUE(std::isnan(record.metrics[0].coverage));
   EXPECT_TRUE(std::isnan(record.metrics[0].abs_rel));
+}
+
+// With a per-image field of view, each frame gets a pinhole of its own size: the scene's camera
+// (another size, as when it came from a different first image) serves only for the mount height.
+TEST(FrameEvaluator, PerImageFieldOfViewGivesTheImageItsOwnCamera) {
+  EvalTempDir dir("frame");
+  EvalScene scene = MakeScene(dir);
+  // The render camera: 320 px wide with fx = 250, so tan(hfov / 2) = 160 / 250.
+  const double hfov_deg = 2 * std::atan(160.0 / 250.0) * 180 / M_PI;
+  scene.camera = Camera::FromHorizontalFov(640, 480, 1.0, 1.2);
+  FrameRecord wrong;
+  ASSERT_TRUE(EvaluateFrame(scene, 0, *MakeRecoverer(), FrameEvalOptions(), &wrong).ok());
+  EXPECT_FALSE(wrong.status.ok());  // A 640x480 camera for a 320x240 image.
+
+  scene.per_image_hfov_deg = hfov_deg;
+  FrameRecord record;
+  ASSERT_TRUE(EvaluateFrame(scene, 0, *MakeRecoverer(), FrameEvalOptions(), &record).ok());
+  ASSERT_TRUE(record.status.ok()) << record.status.ToString();
+  EXPECT_NEAR(record.estimate.width, 2.1, 0.2);
+  EXPECT_LT(record.metrics[0].abs_rel, 0.15);
+
+  const Camera camera = FrameCamera(scene, cv::Size(320, 240));
+  EXPECT_EQ(camera.image_width, 320);
+  EXPECT_EQ(camera.image_height, 240);
+  EXPECT_NEAR(camera.fx, 250.0, 1e-9);
+  EXPECT_NEAR(camera.fy, 250.0, 1e-9);
+  EXPECT_NEAR(camera.cx, 159.5, 1e-12);
+  EXPECT_NEAR(camera.cy, 119.5, 1e-12);
+  EXPECT_EQ(camera.mount_height, 1.2);
+  scene.per_image_hfov_deg = 0;
+  EXPECT_EQ(FrameCamera(scene, cv::Size(320, 240)).image_width, 640);  // The scene's own.
 }
 
 }  // namespace

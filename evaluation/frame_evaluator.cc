@@ -1,4 +1,4 @@
-#include "tools/eval/frame_evaluator.h"
+#include "evaluation/frame_evaluator.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,9 +7,9 @@
 #include <limits>
 
 #include "evaluation/ceiling_visibility.h"
+#include "evaluation/frame_panel.h"
 #include "io/dataset.h"
 #include "io/image_io.h"
-#include "tools/eval/frame_panel.h"
 
 namespace corridor {
 namespace {
@@ -68,22 +68,25 @@ void AccumulateDepthBins(const cv::Mat& pred, const cv::Mat& gt, double max_dept
   }
 }
 
-Status EvaluateFrame(const InputScene& scene, size_t index, const DepthRecoverer& recoverer,
+Status EvaluateFrame(const EvalScene& scene, size_t index, const DepthRecoverer& recoverer,
                      const FrameEvalOptions& options, FrameRecord* record, SequencePrior* prior,
                      JunctionTrack* track) {
   const DatasetFrame& frame = scene.frames[index];
   *record = FrameRecord();
   record->scene = scene.name;
   record->frame = frame.name;
-  record->has_truth = frame.has_truth;
-  if (frame.has_truth) {
-    record->truth = frame.truth.geometry;
-    record->ceiling_visible = CeilingJunctionVisible(record->truth, scene.camera);
-  }
   record->has_depth_truth = !frame.depth_path.empty();
 
   cv::Mat image, gt;
-  Status status = ReadColorImage(frame.rgb_path, &image);
+  Status status = ReadColorImage(frame.rgb_path, &image,
+                                 scene.per_image_hfov_deg > 0 ? ImageOrientation::kUpright
+                                                              : ImageOrientation::kAsStored);
+  const Camera camera = image.empty() ? scene.camera : FrameCamera(scene, image.size());
+  record->has_truth = frame.has_truth;
+  if (frame.has_truth) {
+    record->truth = frame.truth.geometry;
+    record->ceiling_visible = CeilingJunctionVisible(record->truth, camera);
+  }
   Status gt_status = Status::Ok();
   if (record->has_depth_truth) {
     gt_status = ReadDepthPng(frame.depth_path, &gt);
@@ -96,7 +99,7 @@ Status EvaluateFrame(const InputScene& scene, size_t index, const DepthRecoverer
   RecoverDepthResult result;
   if (status.ok()) {
     record->ran = true;
-    status = recoverer.Recover(image, scene.camera, &result,
+    status = recoverer.Recover(image, camera, &result,
                                prior != nullptr ? prior->Previous() : nullptr, track);
     if (prior != nullptr) prior->Update(result);
     record->times = result.times;

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "tools/eval/frame_evaluator.h"
+#include "evaluation/frame_evaluator.h"
 
 namespace corridor {
 namespace testing_util {

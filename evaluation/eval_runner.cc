@@ -1,13 +1,10 @@
-#include "tools/eval/eval_runner.h"
+#include "evaluation/eval_runner.h"
 
 #include <algorithm>
 #include <atomic>
-#include <memory>
 #include <mutex>
+#include <string>
 #include <thread>
-#include <utility>
-
-#include "tools/progress.h"
 
 namespace corridor {
 
@@ -20,7 +17,7 @@ Status ResolveThreadCount(int flag, int* threads) {
   return Status::Ok();
 }
 
-Status EvaluateScenes(const std::vector<InputScene>& scenes, const DepthRecoverer& recoverer,
+Status EvaluateScenes(const std::vector<EvalScene>& scenes, const DepthRecoverer& recoverer,
                       const FrameEvalOptions& frame_options, const EvalRunOptions& run_options,
                       std::vector<FrameRecord>* records) {
   // Jobs: (scene, first frame, end frame, first record), in dataset order; one frame each, or
@@ -40,16 +37,11 @@ Status EvaluateScenes(const std::vector<InputScene>& scenes, const DepthRecovere
     count += n;
   }
   records->assign(count, FrameRecord());
-  const int total = static_cast<int>(count);
-  std::unique_ptr<Progress> progress;
-  if (!run_options.progress_label.empty()) {
-    progress = std::make_unique<Progress>(run_options.progress_label, total);
-  }
 
   std::atomic<size_t> next{0};
   std::atomic<bool> stop{false};
-  std::mutex mutex;  // Guards done, first_error and progress.
-  int done = 0;
+  std::mutex mutex;  // Guards done, first_error and the progress calls.
+  size_t done = 0;
   Status first_error = Status::Ok();
   auto work = [&]() {
     while (!stop.load()) {
@@ -70,7 +62,7 @@ Status EvaluateScenes(const std::vector<InputScene>& scenes, const DepthRecovere
           stop = true;
         }
         ++done;
-        if (progress) progress->Tick(done);
+        if (run_options.progress) run_options.progress(done, count);
       }
     }
   };
@@ -80,7 +72,6 @@ Status EvaluateScenes(const std::vector<InputScene>& scenes, const DepthRecovere
   for (int t = 1; t < num_threads; ++t) workers.emplace_back(work);
   work();
   for (auto& worker : workers) worker.join();
-  if (progress) progress->Finish();
   return first_error;
 }
 

@@ -1,4 +1,4 @@
-#include "tools/eval/report_tables.h"
+#include "evaluation/report_tables.h"
 
 #include <cmath>
 #include <cstdio>

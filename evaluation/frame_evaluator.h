@@ -7,9 +7,9 @@
 #include "core/corridor_geometry.h"
 #include "core/status.h"
 #include "evaluation/depth_metrics.h"
+#include "evaluation/eval_scene.h"
 #include "pipeline/recover_depth.h"
 #include "pipeline/sequence_prior.h"
-#include "tools/input_source.h"
 
 namespace corridor {
 
@@ -19,7 +19,7 @@ struct DepthBin {
   int64_t pixels = 0;      // Pixels with both ground truth in the bin and a prediction.
 };
 
-// Everything corridor_eval learns about one frame: one row of report.csv.
+// Everything the evaluation learns about one frame: one row of corridor_eval's report.csv.
 struct FrameRecord {
   std::string scene;                  // Scene name.
   std::string frame;                  // Frame name (the file name without extension).
@@ -54,13 +54,14 @@ struct FrameEvalOptions {
 std::string VisRelativePath(const std::string& scene, const std::string& frame);
 std::string DepthRelativePath(const std::string& scene, const std::string& frame);
 
-// Evaluates scene.frames[index]: reads the image and its ground truth, recovers depth, and fills
-// `record`. A frame that fails (unreadable file, no corridor, depth/colour size mismatch) is a
-// record with a non-ok status, not an error. Returns non-ok only when an output cannot be
-// written. With a `prior` (a sequence; may be null) the frame is reconstructed with the previous
-// frame's geometry (hidden junction, held width), and the prior is updated. With a `track` (may
-// be null) the junctions are sought near the previous frame's first (JunctionTrack).
-Status EvaluateFrame(const InputScene& scene, size_t index, const DepthRecoverer& recoverer,
+// Evaluates scene.frames[index]: reads the image and its ground truth, recovers depth with the
+// frame's camera (FrameCamera, eval_scene.h), and fills `record`. A frame that fails (unreadable
+// file, no corridor, depth/colour size mismatch) is a record with a non-ok status, not an error.
+// Returns non-ok only when an output cannot be written. With a `prior` (a sequence; may be null)
+// the frame is reconstructed with the previous frame's geometry (hidden junction, held width),
+// and the prior is updated. With a `track` (may be null) the junctions are sought near the
+// previous frame's first (JunctionTrack).
+Status EvaluateFrame(const EvalScene& scene, size_t index, const DepthRecoverer& recoverer,
                      const FrameEvalOptions& options, FrameRecord* record,
                      SequencePrior* prior = nullptr, JunctionTrack* track = nullptr);
 
