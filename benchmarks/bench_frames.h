@@ -11,7 +11,7 @@
 
 #include <opencv2/core.hpp>
 
-#include "core/camera.h"
+#include "corridor_depth/camera.h"
 #include "synth/corridor_renderer.h"
 #include "synth/presets.h"
 

@@ -33,7 +33,7 @@
 
 #include "benchmarks/bench_frames.h"
 #include "perception/junction_tracker.h"
-#include "pipeline/recover_depth.h"
+#include "corridor_depth/recover_depth.h"
 #include "pipeline/sequence_prior.h"
 
 namespace corridor {

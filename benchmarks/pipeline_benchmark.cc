@@ -14,8 +14,8 @@
 #include <opencv2/core.hpp>
 
 #include "benchmarks/bench_frames.h"
-#include "io/dataset.h"
-#include "io/image_io.h"
+#include "corridor_depth/dataset.h"
+#include "corridor_depth/image_io.h"
 #include "perception/junction_tracker.h"
 #include "pipeline/frame_pipeline.h"
 #include "pipeline/sequence_prior.h"

@@ -3,7 +3,7 @@
 
 #include <benchmark/benchmark.h>
 
-#include "depth/rasterizer.h"
+#include "corridor_depth/rasterizer.h"
 
 namespace corridor {
 namespace {

@@ -5,7 +5,7 @@
 
 #include <benchmark/benchmark.h>
 
-#include "estimation/solver.h"
+#include "corridor_depth/solver.h"
 #include "tests/support/exact_observation.h"
 
 namespace corridor {

@@ -29,7 +29,7 @@
 #include "perception/line_segments.h"
 #include "pipeline/inner_line_check.h"
 #include "pipeline/plausibility.h"
-#include "pipeline/recover_depth.h"
+#include "corridor_depth/recover_depth.h"
 
 namespace corridor {
 namespace {

@@ -1,24 +1,23 @@
-# corridor_add_library(NAME SOURCES ... DEPS ...): one library per module, include paths from the root.
+# corridor_add_library(NAME SOURCES ... HEADERS ... DEPS ...): one library per module. Its private
+# headers (HEADERS, not installed) are included by their path from the root ("perception/x.h");
+# the public ones live in include/corridor_depth/ and are included as "corridor_depth/x.h".
 set(CORRIDOR_WARNINGS -Wall -Wextra -Wpedantic -Wshadow -Wnon-virtual-dtor -Wswitch)
 if(CORRIDOR_WERROR)
   list(APPEND CORRIDOR_WARNINGS -Werror)
 endif()
 
-set(CORRIDOR_LIBRARIES "" CACHE INTERNAL "Module libraries to install")
 
 function(corridor_add_library name)
   cmake_parse_arguments(ARG "" "" "SOURCES;HEADERS;DEPS" ${ARGN})
   add_library(${name} ${ARG_SOURCES} ${ARG_HEADERS})
   add_library(corridor_depth::${name} ALIAS ${name})
   target_include_directories(${name} PUBLIC
+    $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/include>
     $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}>
-    $<INSTALL_INTERFACE:include/corridor_depth>)
+    $<INSTALL_INTERFACE:include>)
   target_compile_options(${name} PRIVATE ${CORRIDOR_WARNINGS})
   target_link_libraries(${name} PUBLIC ${ARG_DEPS})
   set_target_properties(${name} PROPERTIES EXPORT_NAME ${name})
-  set(CORRIDOR_LIBRARIES ${CORRIDOR_LIBRARIES} ${name} CACHE INTERNAL "")
-  file(RELATIVE_PATH rel "${PROJECT_SOURCE_DIR}" "${CMAKE_CURRENT_SOURCE_DIR}")
-  install(FILES ${ARG_HEADERS} DESTINATION include/corridor_depth/${rel})
 endfunction()
 
 # corridor_add_executable(NAME SOURCES ... DEPS ...)

@@ -1,4 +1,4 @@
-#include "core/corridor_geometry.h"
+#include "corridor_depth/corridor_geometry.h"
 
 #include <cstdio>
 

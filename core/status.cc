@@ -1,4 +1,4 @@
-#include "core/status.h"
+#include "corridor_depth/status.h"
 
 namespace corridor {
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 
-#include "core/corridor_frame.h"
+#include "corridor_depth/corridor_frame.h"
 #include "core/cpu_features.h"
 
 namespace corridor {

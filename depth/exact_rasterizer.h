@@ -4,7 +4,7 @@
 #include <mutex>
 
 #include "depth/ray_table.h"
-#include "depth/rasterizer.h"
+#include "corridor_depth/rasterizer.h"
 
 namespace corridor {
 

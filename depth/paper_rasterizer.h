@@ -1,6 +1,6 @@
 #pragma once
 
-#include "depth/rasterizer.h"
+#include "corridor_depth/rasterizer.h"
 
 namespace corridor {
 

@@ -2,8 +2,8 @@
 
 #include <opencv2/core.hpp>
 
-#include "core/point_cloud.h"
-#include "core/status.h"
+#include "corridor_depth/point_cloud.h"
+#include "corridor_depth/status.h"
 #include "depth/ray_table.h"
 
 namespace corridor {

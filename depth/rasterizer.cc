@@ -1,4 +1,4 @@
-#include "depth/rasterizer.h"
+#include "corridor_depth/rasterizer.h"
 
 #include <cmath>
 

@@ -1,6 +1,6 @@
 #include "depth/ray_table.h"
 
-#include "core/corridor_frame.h"
+#include "corridor_depth/corridor_frame.h"
 
 namespace corridor {
 

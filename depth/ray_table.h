@@ -2,7 +2,7 @@
 
 #include <vector>
 
-#include "core/camera.h"
+#include "corridor_depth/camera.h"
 
 namespace corridor {
 

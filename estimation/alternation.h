@@ -4,11 +4,11 @@
 #include <limits>
 #include <vector>
 
-#include "core/status.h"
-#include "estimation/corridor_observation.h"
-#include "estimation/solver.h"
-#include "estimation/symmetry_residual.h"
-#include "estimation/width_residual.h"
+#include "corridor_depth/status.h"
+#include "corridor_depth/corridor_observation.h"
+#include "corridor_depth/solver.h"
+#include "corridor_depth/symmetry_residual.h"
+#include "corridor_depth/width_residual.h"
 
 namespace corridor {
 

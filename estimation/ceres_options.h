@@ -2,7 +2,7 @@
 
 #include <ceres/solver.h>
 
-#include "estimation/solver_options.h"
+#include "corridor_depth/solver_options.h"
 
 namespace corridor {
 

@@ -5,9 +5,9 @@
 
 #include <Eigen/Eigenvalues>
 
-#include "core/corridor_frame.h"
-#include "estimation/line_inliers.h"
-#include "estimation/virtual_camera.h"
+#include "corridor_depth/corridor_frame.h"
+#include "corridor_depth/line_inliers.h"
+#include "corridor_depth/virtual_camera.h"
 
 namespace corridor {
 namespace {

@@ -4,9 +4,9 @@
 
 #include <Eigen/Core>
 
-#include "core/corridor_geometry.h"
-#include "core/status.h"
-#include "estimation/corridor_observation.h"
+#include "corridor_depth/corridor_geometry.h"
+#include "corridor_depth/status.h"
+#include "corridor_depth/corridor_observation.h"
 
 namespace corridor {
 

@@ -1,4 +1,4 @@
-#include "estimation/corridor_observation.h"
+#include "corridor_depth/corridor_observation.h"
 
 #include <cmath>
 

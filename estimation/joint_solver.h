@@ -1,6 +1,6 @@
 #pragma once
 
-#include "estimation/solver.h"
+#include "corridor_depth/solver.h"
 
 namespace corridor {
 

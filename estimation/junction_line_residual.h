@@ -9,8 +9,8 @@
 
 #include <ceres/autodiff_cost_function.h>
 
-#include "core/corridor_frame.h"
-#include "estimation/virtual_camera.h"
+#include "corridor_depth/corridor_frame.h"
+#include "corridor_depth/virtual_camera.h"
 
 namespace corridor {
 

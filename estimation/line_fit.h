@@ -1,7 +1,7 @@
 #pragma once
 
-#include "core/corridor_geometry.h"
-#include "estimation/corridor_observation.h"
+#include "corridor_depth/corridor_geometry.h"
+#include "corridor_depth/corridor_observation.h"
 
 namespace corridor {
 

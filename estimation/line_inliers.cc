@@ -1,4 +1,4 @@
-#include "estimation/line_inliers.h"
+#include "corridor_depth/line_inliers.h"
 
 #include <algorithm>
 #include <cmath>

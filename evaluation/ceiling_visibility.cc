@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/corridor_frame.h"
+#include "corridor_depth/corridor_frame.h"
 
 namespace corridor {
 namespace {

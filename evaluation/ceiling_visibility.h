@@ -5,8 +5,8 @@
 // (-d_l, h - H_c, Z) and (d_r, h - H_c, Z) in the corridor frame) through the true geometry, and
 // measures how much of them lands inside the image. It uses nothing of the ceiling search.
 
-#include "core/camera.h"
-#include "core/corridor_geometry.h"
+#include "corridor_depth/camera.h"
+#include "corridor_depth/corridor_geometry.h"
 
 namespace corridor {
 

@@ -1,4 +1,6 @@
-#include "evaluation/eval_runner.h"
+#include "corridor_depth/evaluation.h"
+#include "perception/junction_tracker.h"
+#include "pipeline/sequence_prior.h"
 
 #include <algorithm>
 #include <atomic>

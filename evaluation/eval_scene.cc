@@ -1,4 +1,4 @@
-#include "evaluation/eval_scene.h"
+#include "corridor_depth/evaluation.h"
 
 #include <cmath>
 

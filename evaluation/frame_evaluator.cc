@@ -1,4 +1,4 @@
-#include "evaluation/frame_evaluator.h"
+#include "corridor_depth/evaluation.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,8 +8,10 @@
 
 #include "evaluation/ceiling_visibility.h"
 #include "evaluation/frame_panel.h"
-#include "io/dataset.h"
-#include "io/image_io.h"
+#include "corridor_depth/dataset.h"
+#include "corridor_depth/image_io.h"
+#include "perception/junction_tracker.h"
+#include "pipeline/sequence_prior.h"
 
 namespace corridor {
 namespace {

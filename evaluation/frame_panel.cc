@@ -5,7 +5,7 @@
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
-#include "pipeline/visualization.h"
+#include "corridor_depth/visualization.h"
 
 namespace corridor {
 namespace {

@@ -7,7 +7,7 @@
 
 #include <Eigen/Geometry>
 
-#include "core/corridor_frame.h"
+#include "corridor_depth/corridor_frame.h"
 #include "io/csv_row.h"
 
 namespace corridor {

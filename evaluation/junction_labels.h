@@ -6,9 +6,9 @@
 
 #include <Eigen/Core>
 
-#include "core/camera.h"
-#include "core/corridor_geometry.h"
-#include "core/status.h"
+#include "corridor_depth/camera.h"
+#include "corridor_depth/corridor_geometry.h"
+#include "corridor_depth/status.h"
 
 namespace corridor {
 

@@ -1,4 +1,4 @@
-#include "evaluation/report_builder.h"
+#include "corridor_depth/evaluation.h"
 
 #include <algorithm>
 #include <cctype>

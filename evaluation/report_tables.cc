@@ -1,4 +1,4 @@
-#include "evaluation/report_tables.h"
+#include "corridor_depth/evaluation.h"
 
 #include <cmath>
 #include <cstdio>

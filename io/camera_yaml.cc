@@ -1,11 +1,11 @@
-#include "io/camera_yaml.h"
+#include "corridor_depth/camera_yaml.h"
 
 #include <array>
 #include <vector>
 
 #include <yaml-cpp/yaml.h>
 
-#include "io/image_io.h"
+#include "corridor_depth/image_io.h"
 #include "io/yaml_util.h"
 
 namespace corridor {

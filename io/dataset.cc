@@ -1,4 +1,4 @@
-#include "io/dataset.h"
+#include "corridor_depth/dataset.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -6,7 +6,7 @@
 #include <set>
 #include <system_error>
 
-#include "io/camera_yaml.h"
+#include "corridor_depth/camera_yaml.h"
 #include "io/file_util.h"
 
 namespace corridor {

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "core/status.h"
+#include "corridor_depth/status.h"
 
 namespace corridor {
 

@@ -1,4 +1,4 @@
-#include "io/image_io.h"
+#include "corridor_depth/image_io.h"
 
 #include <cmath>
 #include <cstdint>

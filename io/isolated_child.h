@@ -12,7 +12,7 @@
 #include <memory>
 #include <string>
 
-#include "core/status.h"
+#include "corridor_depth/status.h"
 
 namespace corridor {
 

@@ -1,8 +1,8 @@
-#include "io/ply_io.h"
+#include "corridor_depth/ply_io.h"
 
 #include <cstring>
 
-#include "io/image_io.h"
+#include "corridor_depth/image_io.h"
 
 namespace corridor {
 namespace {

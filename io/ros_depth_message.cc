@@ -5,7 +5,7 @@
 #include <cstring>
 #include <limits>
 
-#include "io/image_io.h"
+#include "corridor_depth/image_io.h"
 
 namespace corridor {
 

@@ -6,8 +6,8 @@
 #include <sensor_msgs/CameraInfo.h>
 #include <sensor_msgs/Image.h>
 
-#include "core/camera.h"
-#include "core/status.h"
+#include "corridor_depth/camera.h"
+#include "corridor_depth/status.h"
 
 namespace corridor {
 

@@ -1,10 +1,10 @@
-#include "io/truth_yaml.h"
+#include "corridor_depth/truth_yaml.h"
 
 #include <set>
 
 #include <yaml-cpp/yaml.h>
 
-#include "io/image_io.h"
+#include "corridor_depth/image_io.h"
 #include "io/yaml_util.h"
 
 namespace corridor {

@@ -7,7 +7,7 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include "core/status.h"
+#include "corridor_depth/status.h"
 
 namespace corridor {
 

@@ -2,7 +2,7 @@
 
 #include <opencv2/core.hpp>
 
-#include "core/status.h"
+#include "corridor_depth/status.h"
 
 namespace corridor {
 

@@ -6,7 +6,7 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "core/corridor_frame.h"
+#include "corridor_depth/corridor_frame.h"
 #include "core/cpu_features.h"
 #ifdef CORRIDOR_AVX2_VARIANTS
 #include <immintrin.h>

@@ -4,40 +4,14 @@
 
 #include <opencv2/core.hpp>
 
-#include "core/camera.h"
-#include "core/corridor_geometry.h"
-#include "core/status.h"
+#include "corridor_depth/camera.h"
+#include "corridor_depth/corridor_geometry.h"
+#include "corridor_depth/status.h"
 #include "perception/oriented_edges.h"
+#include "corridor_depth/stage_options.h"
+#include "corridor_depth/stage_results.h"
 
 namespace corridor {
-
-// Finding the ceiling height once the walls are known (beyond the paper; docs/geometry.md s6).
-struct CeilingDetectorOptions {
-  double min_height = 1.8;             // Lowest ceiling considered, m above the floor.
-  double max_height = 6.0;             // Highest ceiling considered, m above the floor.
-  double step = 0.01;                  // Search step of the ceiling height, m.
-  double near_distance = 1.0;          // Junction samples from this distance along the corridor, m...
-  double far_distance = 30.0;          // ... to this one.
-  int samples = 80;                    // Samples per junction line.
-  double min_support = 0.35;           // Fraction of a line's visible samples on edges to accept it.
-  double min_counted_fraction = 0.25;  // ... counting at least this fraction of `samples` as visible (a high ceiling, or a narrow vertical field of view, shows its junction only from a few metres on).
-
-  bool Check(std::string* why) const;
-};
-
-struct CeilingEstimate {
-  bool found = false;        // True when at least one ceiling/wall junction was seen.
-  double height = 0;         // H_c, m above the floor (valid when found).
-  double left_support = 0;   // Fraction of the left junction's visible samples on edges (at least min_counted_fraction of the samples counted).
-  double right_support = 0;  // Same for the right one.
-  int points = 0;            // Edge pixels whose rays gave the robust (median) estimate.
-  // Each side searched alone: the height whose junction on that wall best follows the edges, and
-  // its support. A wrong wall distance scales its side's height, so the two then disagree.
-  double side_height[2] = {0, 0};           // Left, right: H_c, m (0 when the side has no line).
-  double side_support[2] = {0, 0};          // Left, right: the support of that line (of at least half the samples, as the search counts).
-  double side_visible_support[2] = {0, 0};  // Left, right: the same line's support on its samples in view (at least min_counted_fraction counted, as the chosen lines are judged).
-  std::string reason;                       // Why nothing was found.
-};
 
 // Searches the ceiling height whose two ceiling/wall junctions, (-d_l, h - H_c, Z) and
 // (d_r, h - H_c, Z), best follow the image's edges; then each edge pixel near the chosen lines

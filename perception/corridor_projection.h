@@ -4,8 +4,8 @@
 
 #include <opencv2/core.hpp>
 
-#include "core/camera.h"
-#include "core/corridor_frame.h"
+#include "corridor_depth/camera.h"
+#include "corridor_depth/corridor_frame.h"
 
 namespace corridor {
 

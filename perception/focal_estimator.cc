@@ -10,7 +10,7 @@
 #include <Eigen/Dense>
 #include <opencv2/imgproc.hpp>
 
-#include "core/camera.h"
+#include "corridor_depth/camera.h"
 #include "perception/focal_lines.h"
 
 namespace corridor {

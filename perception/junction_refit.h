@@ -2,7 +2,7 @@
 
 #include <opencv2/core.hpp>
 
-#include "perception/junction_lines.h"
+#include "corridor_depth/junction_lines.h"
 
 namespace corridor {
 

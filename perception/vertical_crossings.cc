@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "core/corridor_frame.h"
+#include "corridor_depth/corridor_frame.h"
 
 namespace corridor {
 namespace {

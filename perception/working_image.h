@@ -2,7 +2,7 @@
 
 #include <opencv2/core.hpp>
 
-#include "core/camera.h"
+#include "corridor_depth/camera.h"
 
 namespace corridor {
 

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <limits>
 
-#include "core/corridor_frame.h"
-#include "core/corridor_geometry.h"
+#include "corridor_depth/corridor_frame.h"
+#include "corridor_depth/corridor_geometry.h"
 
 namespace corridor {
 

@@ -6,7 +6,7 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "core/corridor_frame.h"
+#include "corridor_depth/corridor_frame.h"
 #include "perception/appearance.h"
 #include "pipeline/box_surface.h"
 

@@ -2,8 +2,8 @@
 
 #include <opencv2/core.hpp>
 
-#include "core/camera.h"
-#include "core/corridor_geometry.h"
+#include "corridor_depth/camera.h"
+#include "corridor_depth/corridor_geometry.h"
 
 namespace corridor {
 

@@ -1,4 +1,4 @@
-#include "pipeline/depth_sequence.h"
+#include "corridor_depth/depth_sequence.h"
 
 #include "perception/junction_tracker.h"
 #include "pipeline/sequence_prior.h"

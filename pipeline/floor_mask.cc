@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 
-#include "core/corridor_frame.h"
+#include "corridor_depth/corridor_frame.h"
 #include "pipeline/box_surface.h"
 
 namespace corridor {

@@ -2,33 +2,13 @@
 
 #include <string>
 
-#include "core/corridor_geometry.h"
-#include "perception/junction_lines.h"
+#include "corridor_depth/corridor_geometry.h"
+#include "corridor_depth/junction_lines.h"
 #include "perception/vertical_crossings.h"
 #include "perception/working_image.h"
+#include "corridor_depth/stage_results.h"
 
 namespace corridor {
-
-// What a frame's layout rests on, each part measured on the frame's own image.
-struct FrameEvidence {
-  // Per side (left, right): the detector's confidence in the junction line, in [0, 1] (its
-  // boundary score times its support length, JunctionLine::confidence); -1 when the side has no
-  // line (one junction and a known width).
-  double junction[2] = {-1, -1};
-  // |log| of the ratio of the two ceiling sides' heights above the camera, each side searched
-  // alone: a wrong wall distance scales its side's height. -1 when they cannot be compared (no
-  // ceiling in view, or a side too weak).
-  double ceiling_disagreement = -1;
-  // Per side: vertical edges (door frames, corners) reaching the junction from above, and those
-  // that go on below it (vertical_crossings.h).
-  VerticalCrossings crossings[2];
-  // The geometry is not the two junctions' alone: one junction and a known width, a held width, a
-  // lower parallel line taken, or walls scaled to a held ceiling.
-  bool corrected = false;
-  // The side whose wall the inner-line check moved out to where its ceiling junction agrees with
-  // the other side's (0 left, 1 right; -1 none): the geometry then rests on the ceiling's evidence.
-  int moved_side = -1;
-};
 
 // The frame's confidence in [0, 1]: the product of one factor per kind of evidence, each 1 when
 // that evidence is good or absent, lower when it speaks against the layout (docs/method.md,

@@ -5,6 +5,7 @@
 
 #include "pipeline/bounded_queue.h"
 #include "pipeline/sequence_prior.h"
+#include "perception/junction_tracker.h"
 
 namespace corridor {
 

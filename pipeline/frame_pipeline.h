@@ -6,7 +6,7 @@
 
 #include <opencv2/core.hpp>
 
-#include "pipeline/recover_depth.h"
+#include "corridor_depth/recover_depth.h"
 
 namespace corridor {
 

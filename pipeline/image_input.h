@@ -2,8 +2,8 @@
 
 #include <opencv2/core.hpp>
 
-#include "core/camera.h"
-#include "core/status.h"
+#include "corridor_depth/camera.h"
+#include "corridor_depth/status.h"
 
 namespace corridor {
 

@@ -8,7 +8,7 @@
 
 #include <Eigen/Geometry>
 
-#include "core/corridor_frame.h"
+#include "corridor_depth/corridor_frame.h"
 #include "perception/appearance.h"
 #include "perception/corridor_projection.h"
 #include "perception/line_segments.h"

@@ -5,34 +5,12 @@
 
 #include <opencv2/core.hpp>
 
-#include "core/camera.h"
-#include "core/corridor_geometry.h"
+#include "corridor_depth/camera.h"
+#include "corridor_depth/corridor_geometry.h"
 #include "perception/ceiling_detector.h"
+#include "corridor_depth/stage_options.h"
 
 namespace corridor {
-
-// A junction taken from a line inside the floor (a grout line, a box's bottom edge, a rug's edge:
-// all parallel to the corridor, so the vanishing point, yaw and pitch stay right) puts its wall
-// too near, by the same factor as the height of the ceiling its own ceiling/wall junction gives:
-// the ceiling junctions, each searched alone over a wide range of heights, then disagree, and the
-// side with the lower ceiling is the one too near. That wall is moved out, by the ratio of the two
-// heights, to where its ceiling junction meets the other side's ceiling.
-// The same disagreement comes from the other wall put too far, by a baseboard's top taken for its
-// junction (its wall distance and ceiling scaled up by h / (h - baseboard height)). The two are
-// told apart by the band each move would cross: moving the near wall out crosses floor (a line
-// inside the floor to the junction), moving the far wall in crosses the baseboard (its top to the
-// junction below it). When both bands look unlike the floor, the far wall is moved in instead.
-struct InnerLineCheckOptions {
-  double min_disagreement = 0.15;            // Least relative difference of the two sides' ceiling heights that moves a wall.
-  double min_support = 0.35;                 // Least fraction of each side's ceiling junction on edges (the ceiling search's own minimum), counted over at least half its samples.
-  double strong_support = 0.45;              // When the trusted side reaches min_support only on its samples in view (a narrow vertical view shows its junction from a few metres on), the side to move needs this much, of at least half its samples.
-  double min_above_camera = 0.2;             // The wide search: ceilings from this far above the camera, m, up to the ceiling search's max_height.
-  double max_line_support = 0.8;             // A floor junction on edges of its orientation over this fraction of its samples in view (sampled as the ceiling search samples its lines) is not moved: a box's edge or floor line covers less.
-  double min_band_contrast = 1.45;           // Both bands (see above) at least this unlike the floor below them (BandContrast, in floor spreads): a baseboard's top was taken on the far side, which moves in; 0 = never.
-  double min_baseboard_disagreement = 0.08;  // Least relative difference of the two sides' ceiling heights that moves the far wall in (a baseboard's top is a few per cent of the camera height above the floor).
-
-  bool Check(std::string* why) const;
-};
 
 struct InnerLineCheck {
   bool moved = false;                  // True when a wall was moved (geometry updated).

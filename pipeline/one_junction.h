@@ -2,10 +2,10 @@
 
 #include <string>
 
-#include "core/camera.h"
-#include "core/corridor_geometry.h"
-#include "core/status.h"
-#include "perception/junction_lines.h"
+#include "corridor_depth/camera.h"
+#include "corridor_depth/corridor_geometry.h"
+#include "corridor_depth/status.h"
+#include "corridor_depth/junction_lines.h"
 
 namespace corridor {
 

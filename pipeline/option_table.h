@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "pipeline/recover_depth.h"
+#include "corridor_depth/recover_depth.h"
 
 namespace corridor {
 

@@ -1,11 +1,11 @@
 #pragma once
 
-#include "core/camera.h"
-#include "core/corridor_geometry.h"
-#include "core/status.h"
-#include "estimation/corridor_observation.h"
-#include "perception/junction_lines.h"
-#include "pipeline/recover_depth.h"
+#include "corridor_depth/camera.h"
+#include "corridor_depth/corridor_geometry.h"
+#include "corridor_depth/status.h"
+#include "corridor_depth/corridor_observation.h"
+#include "corridor_depth/junction_lines.h"
+#include "corridor_depth/recover_depth.h"
 
 namespace corridor {
 

@@ -1,4 +1,4 @@
-#include "pipeline/recover_depth.h"
+#include "corridor_depth/recover_depth.h"
 
 #include <chrono>
 #include <cmath>
@@ -11,6 +11,10 @@
 #include "pipeline/plausibility.h"
 #include "pipeline/sequence_holds.h"
 #include "pipeline/wall_checks.h"
+#include "perception/end_wall_detector.h"
+#include "perception/junction_detector.h"
+#include "perception/junction_tracker.h"
+#include "pipeline/frame_confidence.h"
 
 namespace corridor {
 namespace {

@@ -1,4 +1,4 @@
-#include "pipeline/recover_depth.h"
+#include "corridor_depth/recover_depth.h"
 
 #include <cmath>
 #include <string>

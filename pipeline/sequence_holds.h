@@ -1,7 +1,7 @@
 #pragma once
 
-#include "core/corridor_geometry.h"
-#include "pipeline/recover_depth.h"
+#include "corridor_depth/corridor_geometry.h"
+#include "corridor_depth/recover_depth.h"
 
 namespace corridor {
 

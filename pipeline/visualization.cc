@@ -1,4 +1,4 @@
-#include "pipeline/visualization.h"
+#include "corridor_depth/visualization.h"
 
 #include <cmath>
 #include <cstdio>
@@ -6,7 +6,7 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "core/corridor_frame.h"
+#include "corridor_depth/corridor_frame.h"
 
 namespace corridor {
 namespace {

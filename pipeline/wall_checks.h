@@ -1,13 +1,13 @@
 #pragma once
 
-#include "core/camera.h"
-#include "core/corridor_geometry.h"
-#include "core/status.h"
-#include "estimation/solver.h"
+#include "corridor_depth/camera.h"
+#include "corridor_depth/corridor_geometry.h"
+#include "corridor_depth/status.h"
+#include "corridor_depth/solver.h"
 #include "perception/ceiling_detector.h"
 #include "perception/oriented_edges.h"
 #include "perception/working_image.h"
-#include "pipeline/recover_depth.h"
+#include "corridor_depth/recover_depth.h"
 
 namespace corridor {
 

@@ -2,8 +2,8 @@
 
 #include <sensor_msgs/CameraInfo.h>
 
-#include "core/camera.h"
-#include "core/status.h"
+#include "corridor_depth/camera.h"
+#include "corridor_depth/status.h"
 
 namespace corridor {
 

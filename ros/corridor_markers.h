@@ -3,7 +3,7 @@
 #include <std_msgs/Header.h>
 #include <visualization_msgs/MarkerArray.h>
 
-#include "core/corridor_geometry.h"
+#include "corridor_depth/corridor_geometry.h"
 
 namespace corridor {
 

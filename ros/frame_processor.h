@@ -4,10 +4,10 @@
 
 #include <opencv2/core.hpp>
 
-#include "core/camera.h"
-#include "core/status.h"
-#include "pipeline/depth_sequence.h"
-#include "pipeline/recover_depth.h"
+#include "corridor_depth/camera.h"
+#include "corridor_depth/status.h"
+#include "corridor_depth/depth_sequence.h"
+#include "corridor_depth/recover_depth.h"
 
 namespace corridor {
 

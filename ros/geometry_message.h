@@ -4,8 +4,8 @@
 
 #include <diagnostic_msgs/DiagnosticStatus.h>
 
-#include "core/camera.h"
-#include "pipeline/recover_depth.h"
+#include "corridor_depth/camera.h"
+#include "corridor_depth/recover_depth.h"
 
 namespace corridor {
 

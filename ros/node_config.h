@@ -4,8 +4,8 @@
 
 #include <ros/node_handle.h>
 
-#include "core/status.h"
-#include "pipeline/recover_depth.h"
+#include "corridor_depth/status.h"
+#include "corridor_depth/recover_depth.h"
 
 namespace corridor {
 

@@ -2,9 +2,9 @@
 
 #include <opencv2/core.hpp>
 
-#include "core/camera.h"
-#include "core/corridor_geometry.h"
-#include "core/status.h"
+#include "corridor_depth/camera.h"
+#include "corridor_depth/corridor_geometry.h"
+#include "corridor_depth/status.h"
 #include "synth/corridor_scene.h"
 #include "synth/scene_options.h"
 

@@ -4,10 +4,10 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "io/camera_yaml.h"
-#include "io/dataset.h"
-#include "io/image_io.h"
-#include "io/truth_yaml.h"
+#include "corridor_depth/camera_yaml.h"
+#include "corridor_depth/dataset.h"
+#include "corridor_depth/image_io.h"
+#include "corridor_depth/truth_yaml.h"
 #include "synth/corridor_renderer.h"
 #include "synth/corridor_scene.h"
 #include "synth/sequence.h"

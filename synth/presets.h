@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "core/camera.h"
-#include "core/status.h"
+#include "corridor_depth/camera.h"
+#include "corridor_depth/status.h"
 #include "synth/scene_options.h"
 
 namespace corridor {

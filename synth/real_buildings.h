@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "core/status.h"
+#include "corridor_depth/status.h"
 #include "synth/presets.h"
 
 namespace corridor {

@@ -17,9 +17,9 @@
 #include <glog/logging.h>
 
 #include "depth/point_cloud.h"
-#include "io/camera_yaml.h"
-#include "io/image_io.h"
-#include "io/ply_io.h"
+#include "corridor_depth/camera_yaml.h"
+#include "corridor_depth/image_io.h"
+#include "corridor_depth/ply_io.h"
 #ifdef CORRIDOR_HAVE_ROSBAG
 #include "io/rosbag_io.h"
 #endif
@@ -27,8 +27,8 @@
 #include "pipeline/floor_mask.h"
 #include "pipeline/frame_pipeline.h"
 #include "pipeline/image_input.h"
-#include "pipeline/recover_depth.h"
-#include "pipeline/visualization.h"
+#include "corridor_depth/recover_depth.h"
+#include "corridor_depth/visualization.h"
 #include "tools/frame_source.h"
 #include "tools/geometry_csv.h"
 #include "tools/input_source.h"

@@ -15,10 +15,8 @@
 #include <set>
 #include <utility>
 
-#include "evaluation/eval_runner.h"
-#include "evaluation/report_builder.h"
-#include "evaluation/report_tables.h"
-#include "io/image_io.h"
+#include "corridor_depth/evaluation.h"
+#include "corridor_depth/image_io.h"
 #include "tools/eval/html_report.h"
 #include "tools/eval/plots.h"
 #include "tools/eval/report_writers.h"

@@ -14,8 +14,8 @@
 
 #include "evaluation/junction_labels.h"
 #include "io/csv_row.h"
-#include "io/image_io.h"
-#include "pipeline/recover_depth.h"
+#include "corridor_depth/image_io.h"
+#include "corridor_depth/recover_depth.h"
 #include "tools/geometry_csv.h"
 #include "tools/label_sheet.h"
 #include "tools/progress.h"

@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <vector>
 
-#include "io/image_io.h"
+#include "corridor_depth/image_io.h"
 #include "perception/focal_estimator.h"
 #include "tools/frame_source.h"
 

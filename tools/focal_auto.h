@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "core/status.h"
+#include "corridor_depth/status.h"
 #include "tools/input_source.h"
 
 namespace corridor {

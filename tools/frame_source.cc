@@ -7,7 +7,7 @@
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
 
-#include "io/image_io.h"
+#include "corridor_depth/image_io.h"
 #ifdef CORRIDOR_HAVE_ROSBAG
 #include "io/rosbag_io.h"
 #endif

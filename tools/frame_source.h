@@ -5,7 +5,7 @@
 #include <opencv2/core.hpp>
 #include <opencv2/videoio.hpp>
 
-#include "core/status.h"
+#include "corridor_depth/status.h"
 #include "pipeline/frame_pipeline.h"
 #include "tools/input_source.h"
 

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "io/csv_row.h"
-#include "pipeline/recover_depth.h"
+#include "corridor_depth/recover_depth.h"
 
 namespace corridor {
 

@@ -9,9 +9,9 @@
 #include <opencv2/core.hpp>
 #include <opencv2/videoio.hpp>
 
-#include "evaluation/eval_scene.h"
-#include "io/camera_yaml.h"
-#include "io/image_io.h"
+#include "corridor_depth/evaluation.h"
+#include "corridor_depth/camera_yaml.h"
+#include "corridor_depth/image_io.h"
 #ifdef CORRIDOR_HAVE_ROSBAG
 #include "io/rosbag_io.h"
 #endif

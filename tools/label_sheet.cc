@@ -4,7 +4,7 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "core/corridor_frame.h"
+#include "corridor_depth/corridor_frame.h"
 
 namespace corridor {
 

@@ -11,9 +11,9 @@
 #include <gflags/gflags.h>
 #include <glog/logging.h>
 
-#include "io/image_io.h"
+#include "corridor_depth/image_io.h"
 #include "pipeline/plausibility.h"
-#include "pipeline/recover_depth.h"
+#include "corridor_depth/recover_depth.h"
 #include "tools/compare/compare_report.h"
 #include "tools/compare/synthetic_junctions.h"
 #include "tools/input_source.h"

@@ -2,8 +2,8 @@
 
 #include <gflags/gflags.h>
 
-#include "core/status.h"
-#include "pipeline/recover_depth.h"
+#include "corridor_depth/status.h"
+#include "corridor_depth/recover_depth.h"
 #include "tools/input_source.h"
 #include "tools/tool_help.h"  // CheckFlagNames
 

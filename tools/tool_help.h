@@ -4,7 +4,7 @@
 #include <utility>
 #include <vector>
 
-#include "core/status.h"
+#include "corridor_depth/status.h"
 
 namespace corridor {
 

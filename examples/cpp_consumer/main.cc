@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include "pipeline/corridor_depth.h"
+#include <corridor_depth/corridor_depth.h>
 
 int main(int argc, char** argv) {
   if (argc != 4) {
@@ -25,7 +25,7 @@ int main(int argc, char** argv) {
   if (!status.ok()) return 1;
   int with_depth = 0;
   for (int v = 0; v < result.depth.rows; ++v) {
-    for (int u = 0; u < result.depth.cols; ++u) with_depth += result.depth.at<float>(v, u) > 0;
+    for (int u = 0; u < result.depth.cols; ++u) with_depth += std::isfinite(result.depth.at<float>(v, u));
   }
   std::printf("width_m=%.3f yaw_rad=%.4f pitch_rad=%.4f confidence=%.2f depth_fraction=%.3f\n",
               result.geometry.width, result.geometry.yaw, result.geometry.pitch, result.confidence,

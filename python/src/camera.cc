@@ -5,8 +5,8 @@
 
 #include <pybind11/stl.h>
 
-#include "io/camera_yaml.h"
-#include "io/image_io.h"
+#include "corridor_depth/camera_yaml.h"
+#include "corridor_depth/image_io.h"
 #include "python/src/bindings.h"
 #include "python/src/common.h"
 

@@ -11,8 +11,8 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
-#include "core/camera.h"
-#include "core/status.h"
+#include "corridor_depth/camera.h"
+#include "corridor_depth/status.h"
 
 namespace corridor {
 namespace python {

@@ -2,7 +2,7 @@
 
 #include <limits>
 
-#include "evaluation/depth_metrics.h"
+#include "corridor_depth/depth_metrics.h"
 #include "python/src/bindings.h"
 #include "python/src/common.h"
 

@@ -8,7 +8,7 @@
 
 #include <pybind11/pybind11.h>
 
-#include "pipeline/recover_depth.h"
+#include "corridor_depth/recover_depth.h"
 
 namespace corridor {
 namespace python {

@@ -1,8 +1,8 @@
 // symmetry_residual and width_residual: the two cost functors of the solvers at given parameters.
 
-#include "estimation/residual_loss.h"
-#include "estimation/symmetry_residual.h"
-#include "estimation/width_residual.h"
+#include "corridor_depth/residual_loss.h"
+#include "corridor_depth/symmetry_residual.h"
+#include "corridor_depth/width_residual.h"
 #include "python/src/bindings.h"
 #include "python/src/common.h"
 

@@ -7,7 +7,7 @@
 
 #include <pybind11/numpy.h>
 
-#include "pipeline/recover_depth.h"
+#include "corridor_depth/recover_depth.h"
 
 namespace corridor {
 namespace python {

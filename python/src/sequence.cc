@@ -4,7 +4,7 @@
 #include <memory>
 #include <mutex>
 
-#include "pipeline/depth_sequence.h"
+#include "corridor_depth/depth_sequence.h"
 #include "python/src/bindings.h"
 #include "python/src/common.h"
 #include "python/src/options.h"

@@ -1,7 +1,7 @@
 // SolverSummary and solve: the solvers by name on junction points.
 
-#include "estimation/corridor_observation.h"
-#include "estimation/solver.h"
+#include "corridor_depth/corridor_observation.h"
+#include "corridor_depth/solver.h"
 #include "python/src/bindings.h"
 #include "python/src/common.h"
 

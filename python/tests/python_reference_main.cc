@@ -12,9 +12,9 @@
 #include <fstream>
 #include <string>
 
-#include "io/camera_yaml.h"
-#include "io/image_io.h"
-#include "pipeline/recover_depth.h"
+#include "corridor_depth/camera_yaml.h"
+#include "corridor_depth/image_io.h"
+#include "corridor_depth/recover_depth.h"
 
 int main(int argc, char** argv) {
   if (argc < 5 || argc > 6) {

@@ -23,7 +23,7 @@
 #include <sensor_msgs/CameraInfo.h>
 #include <sensor_msgs/Image.h>
 
-#include "io/camera_yaml.h"
+#include "corridor_depth/camera_yaml.h"
 
 namespace {
 

@@ -24,9 +24,9 @@
 #include <sensor_msgs/PointCloud2.h>
 #include <tf2_msgs/TFMessage.h>
 
-#include "evaluation/depth_metrics.h"
-#include "io/camera_yaml.h"
-#include "io/image_io.h"
+#include "corridor_depth/depth_metrics.h"
+#include "corridor_depth/camera_yaml.h"
+#include "corridor_depth/image_io.h"
 #include "ros/tests/ros_test_process.h"
 
 namespace corridor {

@@ -20,9 +20,9 @@
 
 #include <gtest/gtest.h>
 
-#include "core/status.h"
-#include "evaluation/depth_metrics.h"
-#include "pipeline/recover_depth.h"
+#include "corridor_depth/status.h"
+#include "corridor_depth/depth_metrics.h"
+#include "corridor_depth/recover_depth.h"
 #include "synth/corridor_renderer.h"
 #include "synth/presets.h"
 #include "tests/support/demo_corridor.h"

@@ -1,4 +1,4 @@
-#include "core/camera.h"
+#include "corridor_depth/camera.h"
 
 #include <cmath>
 #include <limits>

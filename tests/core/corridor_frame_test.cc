@@ -1,4 +1,4 @@
-#include "core/corridor_frame.h"
+#include "corridor_depth/corridor_frame.h"
 
 #include <cmath>
 

@@ -9,8 +9,8 @@
 
 #include <Eigen/Geometry>
 
-#include "core/camera.h"
-#include "core/corridor_geometry.h"
+#include "corridor_depth/camera.h"
+#include "corridor_depth/corridor_geometry.h"
 
 namespace corridor {
 namespace testing {

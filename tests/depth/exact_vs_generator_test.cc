@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "depth/exact_rasterizer.h"
-#include "evaluation/depth_metrics.h"
+#include "corridor_depth/depth_metrics.h"
 #include "synth/corridor_renderer.h"
 #include "synth/presets.h"
 

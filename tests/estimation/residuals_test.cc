@@ -5,8 +5,8 @@
 #include <gtest/gtest.h>
 
 #include "estimation/junction_line_residual.h"
-#include "estimation/symmetry_residual.h"
-#include "estimation/width_residual.h"
+#include "corridor_depth/symmetry_residual.h"
+#include "corridor_depth/width_residual.h"
 #include "tests/support/exact_observation.h"
 
 namespace corridor {

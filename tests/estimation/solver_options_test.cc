@@ -1,4 +1,4 @@
-#include "estimation/solver_options.h"
+#include "corridor_depth/solver_options.h"
 
 #include <gtest/gtest.h>
 

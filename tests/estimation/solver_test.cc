@@ -1,4 +1,4 @@
-#include "estimation/solver.h"
+#include "corridor_depth/solver.h"
 
 #include <random>
 

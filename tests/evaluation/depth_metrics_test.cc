@@ -1,4 +1,4 @@
-#include "evaluation/depth_metrics.h"
+#include "corridor_depth/depth_metrics.h"
 
 #include <cmath>
 #include <limits>

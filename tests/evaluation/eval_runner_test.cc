@@ -1,11 +1,11 @@
-#include "evaluation/eval_runner.h"
+#include "corridor_depth/evaluation.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <fstream>
 
-#include "io/dataset.h"
+#include "corridor_depth/dataset.h"
 #include "synth/presets.h"
 #include "tests/evaluation/eval_test_dataset.h"
 

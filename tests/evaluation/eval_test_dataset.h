@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "io/camera_yaml.h"
-#include "io/truth_yaml.h"
+#include "corridor_depth/camera_yaml.h"
+#include "corridor_depth/truth_yaml.h"
 #include "tests/depth/box_truth.h"
 
 namespace corridor {

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "evaluation/frame_evaluator.h"
+#include "corridor_depth/evaluation.h"
 
 namespace corridor {
 namespace testing_util {

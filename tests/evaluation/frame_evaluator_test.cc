@@ -1,4 +1,4 @@
-#include "evaluation/frame_evaluator.h"
+#include "corridor_depth/evaluation.h"
 
 #include <gtest/gtest.h>
 

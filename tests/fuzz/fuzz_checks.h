@@ -10,10 +10,10 @@
 #include <memory>
 #include <string>
 
-#include "core/camera.h"
-#include "io/camera_yaml.h"
+#include "corridor_depth/camera.h"
+#include "corridor_depth/camera_yaml.h"
 #include "pipeline/plausibility.h"
-#include "pipeline/recover_depth.h"
+#include "corridor_depth/recover_depth.h"
 #include "tests/fuzz/fuzz_input.h"
 
 namespace corridor {

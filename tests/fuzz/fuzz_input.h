@@ -26,9 +26,9 @@
 
 #include <opencv2/core.hpp>
 
-#include "core/camera.h"
-#include "perception/junction_lines.h"
-#include "pipeline/recover_depth.h"
+#include "corridor_depth/camera.h"
+#include "corridor_depth/junction_lines.h"
+#include "corridor_depth/recover_depth.h"
 
 namespace corridor {
 namespace fuzz {

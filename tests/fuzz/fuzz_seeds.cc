@@ -8,7 +8,7 @@
 #include <fstream>
 #include <string>
 
-#include "io/camera_yaml.h"
+#include "corridor_depth/camera_yaml.h"
 #include "tests/fuzz/fuzz_input.h"
 #include "tests/reliability/corridor_image.h"
 

@@ -1,4 +1,4 @@
-#include "io/camera_yaml.h"
+#include "corridor_depth/camera_yaml.h"
 
 #include <cmath>
 #include <filesystem>

@@ -1,11 +1,11 @@
-#include "io/dataset.h"
+#include "corridor_depth/dataset.h"
 
 #include <filesystem>
 
 #include <gtest/gtest.h>
 #include <opencv2/imgcodecs.hpp>
 
-#include "io/image_io.h"
+#include "corridor_depth/image_io.h"
 #include "tests/io/test_dir.h"
 
 namespace corridor {

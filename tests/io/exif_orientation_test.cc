@@ -9,7 +9,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "io/exif_orientation.h"
-#include "io/image_io.h"
+#include "corridor_depth/image_io.h"
 #include "tests/io/test_dir.h"
 
 namespace corridor {

@@ -1,4 +1,4 @@
-#include "io/truth_yaml.h"
+#include "corridor_depth/truth_yaml.h"
 
 #include <cmath>
 

@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 #include <opencv2/imgproc.hpp>
 
-#include "core/corridor_frame.h"
+#include "corridor_depth/corridor_frame.h"
 #include "synth/corridor_renderer.h"
 #include "synth/presets.h"
 

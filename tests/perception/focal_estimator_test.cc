@@ -9,7 +9,7 @@
 #include <gtest/gtest.h>
 #include <opencv2/imgproc.hpp>
 
-#include "core/camera.h"
+#include "corridor_depth/camera.h"
 #include "perception/focal_estimator.h"
 #include "synth/corridor_renderer.h"
 #include "tests/perception/drawn_corridor.h"

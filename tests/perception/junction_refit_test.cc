@@ -9,7 +9,7 @@
 
 #include <Eigen/Geometry>
 
-#include "core/camera.h"
+#include "corridor_depth/camera.h"
 #include "tests/support/corridor_frame.h"
 
 namespace corridor {

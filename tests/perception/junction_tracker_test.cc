@@ -12,7 +12,7 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "core/camera.h"
+#include "corridor_depth/camera.h"
 #include "tests/support/corridor_frame.h"
 
 namespace corridor {

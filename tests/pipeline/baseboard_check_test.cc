@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "benchmarks/bench_frames.h"
-#include "pipeline/recover_depth.h"
+#include "corridor_depth/recover_depth.h"
 #include "synth/corridor_renderer.h"
 #include "synth/presets.h"
 #include "tests/support/corridor_frame.h"

@@ -7,8 +7,8 @@
 
 #include <gtest/gtest.h>
 
-#include "evaluation/depth_metrics.h"
-#include "pipeline/recover_depth.h"
+#include "corridor_depth/depth_metrics.h"
+#include "corridor_depth/recover_depth.h"
 #include "tests/support/corridor_frame.h"
 
 namespace corridor {

@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 #include <opencv2/imgproc.hpp>
 
-#include "pipeline/recover_depth.h"
+#include "corridor_depth/recover_depth.h"
 #include "pipeline/sequence_prior.h"
 #include "synth/corridor_renderer.h"
 #include "synth/presets.h"

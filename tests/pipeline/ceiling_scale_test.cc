@@ -10,7 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "pipeline/frame_pipeline.h"
-#include "pipeline/recover_depth.h"
+#include "corridor_depth/recover_depth.h"
 #include "synth/presets.h"
 #include "tests/support/corridor_frame.h"
 

@@ -6,7 +6,7 @@
 #include <memory>
 #include <vector>
 
-#include "pipeline/depth_sequence.h"
+#include "corridor_depth/depth_sequence.h"
 #include "pipeline/frame_pipeline.h"
 #include "tests/support/corridor_frame.h"
 

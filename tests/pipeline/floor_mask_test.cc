@@ -10,7 +10,7 @@
 #include <gtest/gtest.h>
 #include <opencv2/imgcodecs.hpp>
 
-#include "pipeline/recover_depth.h"
+#include "corridor_depth/recover_depth.h"
 #include "synth/corridor_renderer.h"
 #include "synth/presets.h"
 

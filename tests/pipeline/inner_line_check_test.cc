@@ -7,8 +7,8 @@
 #include <gtest/gtest.h>
 
 #include "pipeline/inner_line_check.h"
-#include "pipeline/recover_depth.h"
-#include "pipeline/visualization.h"
+#include "corridor_depth/recover_depth.h"
+#include "corridor_depth/visualization.h"
 #include "synth/corridor_renderer.h"
 #include "synth/presets.h"
 #include "tests/support/corridor_frame.h"

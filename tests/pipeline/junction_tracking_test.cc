@@ -10,7 +10,7 @@
 
 #include "perception/junction_tracker.h"
 #include "pipeline/frame_pipeline.h"
-#include "pipeline/recover_depth.h"
+#include "corridor_depth/recover_depth.h"
 #include "pipeline/sequence_prior.h"
 #include "tests/support/corridor_frame.h"
 

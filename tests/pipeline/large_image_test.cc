@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include "pipeline/recover_depth.h"
+#include "corridor_depth/recover_depth.h"
 #include "synth/corridor_renderer.h"
 #include "synth/presets.h"
 

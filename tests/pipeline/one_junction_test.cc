@@ -7,9 +7,9 @@
 
 #include <gtest/gtest.h>
 
-#include "evaluation/depth_metrics.h"
+#include "corridor_depth/depth_metrics.h"
 #include "pipeline/frame_pipeline.h"
-#include "pipeline/recover_depth.h"
+#include "corridor_depth/recover_depth.h"
 #include "synth/corridor_renderer.h"
 
 namespace corridor {

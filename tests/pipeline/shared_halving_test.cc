@@ -11,7 +11,7 @@
 #include "perception/junction_detector.h"
 #include "perception/working_image.h"
 #include "pipeline/frame_handover.h"
-#include "pipeline/recover_depth.h"
+#include "corridor_depth/recover_depth.h"
 #include "synth/corridor_renderer.h"
 #include "tests/support/corridor_frame.h"
 

@@ -7,8 +7,8 @@
 
 #include <map>
 
-#include "io/camera_yaml.h"
-#include "pipeline/recover_depth.h"
+#include "corridor_depth/camera_yaml.h"
+#include "corridor_depth/recover_depth.h"
 #include "tests/reliability/reliability_util.h"
 #include "tools/input_source.h"
 

@@ -7,7 +7,7 @@
 
 #include <opencv2/imgcodecs.hpp>
 
-#include "io/image_io.h"
+#include "corridor_depth/image_io.h"
 #include "tests/reliability/reliability_util.h"
 #include "tools/input_source.h"
 

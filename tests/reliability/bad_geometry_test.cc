@@ -11,7 +11,7 @@
 
 #include "estimation/closed_form.h"
 #include "pipeline/plausibility.h"
-#include "pipeline/recover_depth.h"
+#include "corridor_depth/recover_depth.h"
 #include "tests/support/exact_observation.h"
 
 namespace corridor {

@@ -9,7 +9,7 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "pipeline/recover_depth.h"
+#include "corridor_depth/recover_depth.h"
 #include "tests/reliability/reliability_util.h"
 #include "tests/support/outdoor_scene.h"
 

@@ -7,7 +7,7 @@
 
 #include <functional>
 
-#include "pipeline/recover_depth.h"
+#include "corridor_depth/recover_depth.h"
 #include "tests/reliability/reliability_util.h"
 
 namespace corridor {

@@ -14,7 +14,7 @@
 #include <thread>
 
 #include "io/file_util.h"
-#include "io/image_io.h"
+#include "corridor_depth/image_io.h"
 #include "tests/reliability/reliability_util.h"
 
 namespace corridor {

@@ -20,8 +20,8 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
-#include "core/camera.h"
-#include "io/camera_yaml.h"
+#include "corridor_depth/camera.h"
+#include "corridor_depth/camera_yaml.h"
 #include "tests/io/test_dir.h"  // ReadAll, Contains
 #include "tests/reliability/corridor_image.h"
 

@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "core/camera.h"
+#include "corridor_depth/camera.h"
 
 namespace corridor {
 namespace testing_util {

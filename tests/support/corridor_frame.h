@@ -10,8 +10,8 @@
 #include <gtest/gtest.h>
 #include <opencv2/imgproc.hpp>
 
-#include "core/camera.h"
-#include "core/corridor_geometry.h"
+#include "corridor_depth/camera.h"
+#include "corridor_depth/corridor_geometry.h"
 #include "synth/corridor_renderer.h"
 #include "synth/presets.h"
 

@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-#include "core/camera.h"
+#include "corridor_depth/camera.h"
 #include "synth/presets.h"
 #include "synth/sequence.h"
 

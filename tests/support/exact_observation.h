@@ -7,8 +7,8 @@
 
 #include <Eigen/Geometry>
 
-#include "core/corridor_geometry.h"
-#include "estimation/corridor_observation.h"
+#include "corridor_depth/corridor_geometry.h"
+#include "corridor_depth/corridor_observation.h"
 
 namespace corridor {
 namespace testing {

@@ -5,8 +5,8 @@
 
 #include <gtest/gtest.h>
 
-#include "io/dataset.h"
-#include "io/image_io.h"
+#include "corridor_depth/dataset.h"
+#include "corridor_depth/image_io.h"
 #include "tests/support/camera_expect.h"
 
 namespace corridor {

@@ -16,9 +16,8 @@
 #include <string>
 #include <vector>
 
-#include "evaluation/eval_runner.h"
-#include "evaluation/report_builder.h"
-#include "io/dataset.h"
+#include "corridor_depth/evaluation.h"
+#include "corridor_depth/dataset.h"
 #include "synth/presets.h"
 #include "tests/evaluation/eval_test_dataset.h"
 

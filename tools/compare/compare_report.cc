@@ -7,8 +7,8 @@
 #include <map>
 #include <set>
 
-#include "io/image_io.h"
-#include "pipeline/visualization.h"
+#include "corridor_depth/image_io.h"
+#include "corridor_depth/visualization.h"
 #include "tools/eval/plot_canvas.h"
 
 namespace corridor {

@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "core/status.h"
+#include "corridor_depth/status.h"
 #include "tools/compare/solver_stats.h"
 
 namespace corridor {

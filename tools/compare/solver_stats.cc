@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "evaluation/report_builder.h"
+#include "corridor_depth/evaluation.h"
 
 namespace corridor {
 

@@ -3,9 +3,9 @@
 #include <string>
 #include <vector>
 
-#include "core/corridor_geometry.h"
-#include "core/status.h"
-#include "estimation/solver.h"
+#include "corridor_depth/corridor_geometry.h"
+#include "corridor_depth/status.h"
+#include "corridor_depth/solver.h"
 
 namespace corridor {
 

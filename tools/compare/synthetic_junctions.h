@@ -2,8 +2,8 @@
 
 #include <random>
 
-#include "core/corridor_geometry.h"
-#include "estimation/corridor_observation.h"
+#include "corridor_depth/corridor_geometry.h"
+#include "corridor_depth/corridor_observation.h"
 
 namespace corridor {
 

@@ -3,8 +3,7 @@
 #include <cctype>
 #include <cstdio>
 
-#include "evaluation/frame_evaluator.h"
-#include "evaluation/report_tables.h"
+#include "corridor_depth/evaluation.h"
 
 namespace corridor {
 namespace {

@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "evaluation/report_builder.h"
+#include "corridor_depth/evaluation.h"
 #include "tools/eval/report_writers.h"
 
 namespace corridor {

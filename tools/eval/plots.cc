@@ -4,8 +4,8 @@
 #include <cmath>
 #include <filesystem>
 
-#include "evaluation/report_tables.h"
-#include "io/image_io.h"
+#include "corridor_depth/evaluation.h"
+#include "corridor_depth/image_io.h"
 #include "tools/eval/plot_canvas.h"
 
 namespace corridor {

@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "core/status.h"
-#include "evaluation/report_builder.h"
+#include "corridor_depth/status.h"
+#include "corridor_depth/evaluation.h"
 
 namespace corridor {
 

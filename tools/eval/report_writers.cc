@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "evaluation/report_tables.h"
+#include "corridor_depth/evaluation.h"
 #include "tools/geometry_csv.h"
 
 namespace corridor {

@@ -15,9 +15,9 @@
 #include <Eigen/Core>
 #include <ceres/autodiff_cost_function.h>
 
-#include "estimation/line_inliers.h"
-#include "estimation/residual_loss.h"
-#include "estimation/virtual_camera.h"
+#include "corridor_depth/line_inliers.h"
+#include "corridor_depth/residual_loss.h"
+#include "corridor_depth/virtual_camera.h"
 
 namespace corridor {
 

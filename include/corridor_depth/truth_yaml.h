@@ -3,8 +3,8 @@
 #include <string>
 #include <vector>
 
-#include "core/corridor_geometry.h"
-#include "core/status.h"
+#include "corridor_depth/corridor_geometry.h"
+#include "corridor_depth/status.h"
 
 namespace corridor {
 

@@ -5,7 +5,7 @@
 
 #include <Eigen/Core>
 
-#include "core/camera.h"
+#include "corridor_depth/camera.h"
 
 namespace corridor {
 

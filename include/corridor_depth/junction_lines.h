@@ -5,7 +5,7 @@
 #include <Eigen/Core>
 #include <opencv2/core.hpp>
 
-#include "core/status.h"
+#include "corridor_depth/status.h"
 
 namespace corridor {
 

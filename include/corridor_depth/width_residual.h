@@ -13,8 +13,8 @@
 #include <Eigen/Core>
 #include <ceres/autodiff_cost_function.h>
 
-#include "estimation/residual_loss.h"
-#include "estimation/virtual_camera.h"
+#include "corridor_depth/residual_loss.h"
+#include "corridor_depth/virtual_camera.h"
 
 namespace corridor {
 

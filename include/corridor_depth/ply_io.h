@@ -2,8 +2,8 @@
 
 #include <string>
 
-#include "core/point_cloud.h"
-#include "core/status.h"
+#include "corridor_depth/point_cloud.h"
+#include "corridor_depth/status.h"
 
 namespace corridor {
 

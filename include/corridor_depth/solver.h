@@ -3,10 +3,10 @@
 #include <memory>
 #include <string>
 
-#include "core/corridor_geometry.h"
-#include "core/status.h"
-#include "estimation/corridor_observation.h"
-#include "estimation/solver_options.h"
+#include "corridor_depth/corridor_geometry.h"
+#include "corridor_depth/status.h"
+#include "corridor_depth/corridor_observation.h"
+#include "corridor_depth/solver_options.h"
 
 namespace corridor {
 

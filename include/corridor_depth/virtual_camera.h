@@ -4,7 +4,7 @@
 // (X_W = -offset), at the same height and pitch, with zero yaw. It maps a real-image floor point
 // to the virtual image. Templated so that Ceres' Jets pass through.
 
-#include "core/corridor_frame.h"
+#include "corridor_depth/corridor_frame.h"
 
 namespace corridor {
 

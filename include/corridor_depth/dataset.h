@@ -5,9 +5,9 @@
 
 #include <opencv2/core.hpp>
 
-#include "core/camera.h"
-#include "core/status.h"
-#include "io/truth_yaml.h"
+#include "corridor_depth/camera.h"
+#include "corridor_depth/status.h"
+#include "corridor_depth/truth_yaml.h"
 
 namespace corridor {
 

@@ -5,23 +5,19 @@
 
 #include <opencv2/core.hpp>
 
-#include "core/camera.h"
-#include "core/corridor_geometry.h"
-#include "core/status.h"
-#include "depth/rasterizer.h"
-#include "estimation/solver.h"
-#include "perception/ceiling_detector.h"
-#include "perception/end_wall_detector.h"
-#include "perception/junction_detector.h"
-#include "perception/junction_lines.h"
-#include "perception/junction_tracker.h"
-#include "perception/vertical_crossings.h"
-#include "pipeline/frame_confidence.h"
-#include "pipeline/inner_line_check.h"
+#include "corridor_depth/camera.h"
+#include "corridor_depth/corridor_geometry.h"
+#include "corridor_depth/junction_lines.h"
+#include "corridor_depth/rasterizer.h"
+#include "corridor_depth/solver.h"
+#include "corridor_depth/stage_options.h"
+#include "corridor_depth/stage_results.h"
+#include "corridor_depth/status.h"
 
 namespace corridor {
 
-struct FrameHandover;
+struct FrameHandover;  // Detect's hand-over to Reconstruct (internal).
+class JunctionTrack;   // A sequence's junction track (internal; DepthSequence owns one).
 
 // Everything RecoverDepth can be told. The defaults just work on a calibrated corridor image.
 struct RecoverDepthOptions {
