@@ -25,154 +25,6 @@ namespace {
 constexpr int kMinImageSide = 24;      // Smaller images cannot show a corridor.
 constexpr long kMinFloorPixels = 200;  // Fewer floor pixels (working resolution) are too few to judge its texture.
 
-Status NoCorridor(JunctionPair* result, const std::string& why) {
-  result->status = Status::NoCorridorFound(why);
-  return Status::Ok();
-}
-
-// The chosen lines' refit on the full-resolution image, when the search ran on a halved one
-// (off: nothing to do).
-struct FullResolutionRefit {
-  bool on = false;
-  const cv::Mat* bgr = nullptr;  // The full-resolution colour image.
-  JunctionRefitOptions options;
-
-  void Apply(JunctionLine* line) const {
-    if (on) RefitJunctionAtFullResolution(*bgr, options, line);
-  }
-};
-
-// Stage: the input as 8-bit BGR (grey and BGRA converted; BGR shared, not copied).
-Status ToColor(const cv::Mat& bgr, cv::Mat* color) {
-  if (bgr.channels() == 1) {
-    cv::cvtColor(bgr, *color, cv::COLOR_GRAY2BGR);
-  } else if (bgr.channels() == 4) {
-    cv::cvtColor(bgr, *color, cv::COLOR_BGRA2BGR);
-  } else if (bgr.channels() == 3) {
-    *color = bgr;
-  } else {
-    return Status::InvalidArgument("image must have 1, 3 or 4 channels");
-  }
-  return Status::Ok();
-}
-
-// Stage: Canny edges and Hough segments of the search region; the segments in image pixels.
-EdgeSegments FindEdgeSegments(const JunctionSearchRegion& region, const SegmentOptions& options) {
-  EdgeSegments found = DetectSegments(region.work, region.work_roi_top, options);
-  SegmentsToImage(region, &found.segments);
-  return found;
-}
-
-// The fraction of the search region that is edges: noise and texture have many.
-double EdgeDensity(const cv::Mat& edges) {
-  return cv::countNonZero(edges) / static_cast<double>(std::max<size_t>(1, edges.total()));
-}
-
-// The refit of the chosen lines on the full-resolution `color`, when the search ran at 1/scale
-// of it: edge points within two working pixels, one per working row, at Canny's low threshold.
-FullResolutionRefit MakeFullResolutionRefit(const cv::Mat& color, int scale,
-                                            const JunctionDetectorOptions& options,
-                                            double canny_high) {
-  FullResolutionRefit refit;
-  refit.on = scale > 1 && options.refit_full_resolution;
-  refit.bgr = &color;
-  refit.options.reach_px = 2.0 * scale;
-  refit.options.step_px = scale;  // As many points as the halved image has rows.
-  refit.options.threshold = options.canny_low_ratio * canny_high;
-  refit.options.support_distance_px = options.support_distance_px;
-  return refit;
-}
-
-// The baseboard rule's band test on the floor `cues` (none when baseboard_band_contrast is 0).
-// The test refers to `cues`, which must outlive it.
-BaseboardBandTest MakeBandTest(const JunctionDetectorOptions& options, const FloorCues& cues) {
-  BaseboardBandTest band;
-  if (options.baseboard_band_contrast > 0) {
-    band.min_contrast = options.baseboard_band_contrast;
-    band.contrast = [&cues](const MergedLine& upper, const MergedLine& lower) {
-      return BandContrast(cues.roi, cues.floor, upper, lower, cues.roi_top, cues.scale);
-    };
-  }
-  return band;
-}
-
-// Stage, when only one side has candidates: the one visible junction (OutermostFloorEdge),
-// refined on the edge pixels below its top end and refitted, and where the other lines meet it.
-void KeepSingleJunction(const std::vector<JunctionCandidate>& side, bool is_left,
-                        const std::vector<MergedLine>& lines,
-                        const std::vector<Eigen::Vector2d>& edges,
-                        const JunctionDetectorOptions& options, int height,
-                        const FullResolutionRefit& refit, JunctionPair* result) {
-  const int best = OutermostFloorEdge(side, is_left, height);
-  if (best < 0) return;  // No line looks like the floor's edge.
-  const MergedLine& m = side[best].line;
-  const Eigen::Vector2d top = m.start.y() < m.end.y() ? m.start : m.end;
-  result->single = RefineJunction(side[best], edges, top, is_left, options.support_distance_px,
-                                  height);
-  refit.Apply(&result->single);
-  result->single_is_left = is_left;
-  result->has_single = true;
-  result->single_has_vp =
-      VoteSingleVanishingPoint(result->single, m, lines, 0.5 * options.min_length_fraction * height,
-                               height, &result->single_vp, &result->single_vp_votes);
-}
-
-// Stage: the chosen pair's final lines (and the lower partners the baseboard rule left), refined
-// on their edge pixels and refitted at full resolution, and their vanishing point.
-void RefineChosenPair(const PairSearch& chosen, const std::vector<Eigen::Vector2d>& edges,
-                      double distance, int height, const FullResolutionRefit& refit,
-                      JunctionPair* result) {
-  const std::vector<JunctionCandidate>& left = chosen.left;
-  const std::vector<JunctionCandidate>& right = chosen.right;
-  const SelectedPair& pair = chosen.pair;
-  result->left = RefineJunction(left[pair.left], edges, pair.vanishing_point, true, distance,
-                                height);
-  result->right = RefineJunction(right[pair.right], edges, pair.vanishing_point, false, distance,
-                                 height);
-  if (pair.left_lower >= 0) {
-    result->left_lower =
-        RefineJunction(left[pair.left_lower], edges, pair.vanishing_point, true, distance, height);
-    result->has_left_lower = true;
-  }
-  if (pair.right_lower >= 0) {
-    result->right_lower = RefineJunction(right[pair.right_lower], edges, pair.vanishing_point,
-                                         false, distance, height);
-    result->has_right_lower = true;
-  }
-  for (JunctionLine* line : {&result->left, &result->right}) refit.Apply(line);
-  if (result->has_left_lower) refit.Apply(&result->left_lower);
-  if (result->has_right_lower) refit.Apply(&result->right_lower);
-  const Eigen::Vector3d vp = result->left.line.cross(result->right.line);
-  result->vanishing_point =
-      std::abs(vp.z()) > 1e-12 ? Eigen::Vector2d(vp.head<2>() / vp.z()) : pair.vanishing_point;
-}
-
-// Stage: the floor between the junctions (result->floor_texture, when enough of it is seen);
-// true, with the reason in *why, when it has too many strong edges along no corridor line for a
-// corridor floor (an outdoor scene, a still life).
-bool FloorIsTextured(const EdgeSegments& found, const JunctionSearchRegion& region,
-                     const JunctionDetectorOptions& options, JunctionPair* result,
-                     std::string* why) {
-  FloorTextureOptions texture_options;
-  texture_options.margin = 3.0 * region.scale;  // Clear of the junctions' own edges (the 5x5 reach).
-  texture_options.strong = options.strong_edge_gradient;
-  texture_options.line_tolerance_deg = options.floor_line_tolerance_deg;
-  const FloorTexture floor_texture =
-      MeasureFloorTexture(found.dx, found.dy, SearchRegionGrid(region), result->left.line,
-                          result->right.line, result->vanishing_point, texture_options);
-  if (floor_texture.floor_pixels >= kMinFloorPixels) {
-    result->floor_texture = floor_texture.odd_fraction;
-  }
-  if (!(result->floor_texture > options.max_floor_texture)) return false;
-  std::ostringstream msg;
-  msg.precision(2);
-  msg << "the floor between the junction lines is textured: " << 100 * floor_texture.odd_fraction
-      << "% of it are strong edges along no corridor line (a corridor floor has at most "
-      << 100 * options.max_floor_texture << "%); not a corridor";
-  *why = msg.str();
-  return true;
-}
-
 }  // namespace
 
 bool JunctionDetectorOptions::Check(std::string* why) const {
@@ -243,54 +95,149 @@ SegmentOptions JunctionSegmentOptions(const JunctionDetectorOptions& options, in
 
 namespace {
 
-// The junction search, stage by stage; `halved` (may be null) as for the second DetectJunctions.
-Status DetectJunctionsIn(const cv::Mat& bgr, const cv::Mat* halved,
-                         const JunctionDetectorOptions& options, JunctionPair* result) {
-  *result = JunctionPair();
+Status NoCorridor(JunctionPair* result, const std::string& why) {
+  result->status = Status::NoCorridorFound(why);
+  return Status::Ok();
+}
+
+// The chosen lines' refit on the full-resolution image, when the search ran on a halved one
+// (off: nothing to do).
+struct FullResolutionRefit {
+  bool on = false;
+  const cv::Mat* bgr = nullptr;  // The full-resolution colour image.
+  JunctionRefitOptions options;
+
+  void Apply(JunctionLine* line) const {
+    if (on) RefitJunctionAtFullResolution(*bgr, options, line);
+  }
+};
+
+// The refit of the chosen lines on the full-resolution `color`, when the search ran at 1/scale
+// of it: edge points within two working pixels, one per working row, at Canny's low threshold.
+FullResolutionRefit MakeFullResolutionRefit(const cv::Mat& color, int scale,
+                                            const JunctionDetectorOptions& options,
+                                            double canny_high) {
+  FullResolutionRefit refit;
+  refit.on = scale > 1 && options.refit_full_resolution;
+  refit.bgr = &color;
+  refit.options.reach_px = 2.0 * scale;
+  refit.options.step_px = scale;  // As many points as the halved image has rows.
+  refit.options.threshold = options.canny_low_ratio * canny_high;
+  refit.options.support_distance_px = options.support_distance_px;
+  return refit;
+}
+
+// The fraction of the search region that is edges: noise and texture have many.
+double EdgeDensity(const cv::Mat& edges) {
+  return cv::countNonZero(edges) / static_cast<double>(std::max<size_t>(1, edges.total()));
+}
+
+// The baseboard rule's band test on the floor `cues` (none when baseboard_band_contrast is 0).
+// The test refers to `cues`, which must outlive it.
+BaseboardBandTest MakeBandTest(const JunctionDetectorOptions& options, const FloorCues& cues) {
+  BaseboardBandTest band;
+  if (options.baseboard_band_contrast > 0) {
+    band.min_contrast = options.baseboard_band_contrast;
+    band.contrast = [&cues](const MergedLine& upper, const MergedLine& lower) {
+      return BandContrast(cues.roi, cues.floor, upper, lower, cues.roi_top, cues.scale);
+    };
+  }
+  return band;
+}
+
+// The one visible junction when only one side has candidates (OutermostFloorEdge), refined on
+// the edge pixels below its top end and refitted, and where the other lines meet it.
+void KeepSingleJunction(const std::vector<JunctionCandidate>& side, bool is_left,
+                        const std::vector<MergedLine>& lines,
+                        const std::vector<Eigen::Vector2d>& edges,
+                        const JunctionDetectorOptions& options, int height,
+                        const FullResolutionRefit& refit, JunctionPair* result) {
+  const int best = OutermostFloorEdge(side, is_left, height);
+  if (best < 0) return;  // No line looks like the floor's edge.
+  const MergedLine& m = side[best].line;
+  const Eigen::Vector2d top = m.start.y() < m.end.y() ? m.start : m.end;
+  result->single = RefineJunction(side[best], edges, top, is_left, options.support_distance_px,
+                                  height);
+  refit.Apply(&result->single);
+  result->single_is_left = is_left;
+  result->has_single = true;
+  result->single_has_vp =
+      VoteSingleVanishingPoint(result->single, m, lines, 0.5 * options.min_length_fraction * height,
+                               height, &result->single_vp, &result->single_vp_votes);
+}
+
+// Stage: what no search can use (an empty or non-8-bit image, bad options): InvalidArgument.
+Status CheckInput(const cv::Mat& bgr, const JunctionDetectorOptions& options) {
   if (bgr.empty()) return Status::InvalidArgument("image is empty");
   if (bgr.depth() != CV_8U) return Status::InvalidArgument("image must be 8-bit");
   std::string why;
   if (!options.Check(&why)) return Status::InvalidArgument("junction detector: " + why);
-  const int width = bgr.cols, height = bgr.rows;
-  if (width < kMinImageSide || height < kMinImageSide) {
-    std::ostringstream msg;
-    msg << "image " << width << "x" << height << " is too small to show a corridor";
-    return NoCorridor(result, msg.str());
+  return Status::Ok();
+}
+
+// Stage: an image too small to show a corridor; true with the reason in *why.
+bool TooSmall(const cv::Mat& bgr, std::string* why) {
+  if (bgr.cols >= kMinImageSide && bgr.rows >= kMinImageSide) return false;
+  std::ostringstream msg;
+  msg << "image " << bgr.cols << "x" << bgr.rows << " is too small to show a corridor";
+  *why = msg.str();
+  return true;
+}
+
+// Stage: the input as 8-bit BGR (grey and BGRA converted; BGR shared, not copied).
+Status ToColor(const cv::Mat& bgr, cv::Mat* color) {
+  if (bgr.channels() == 1) {
+    cv::cvtColor(bgr, *color, cv::COLOR_GRAY2BGR);
+  } else if (bgr.channels() == 4) {
+    cv::cvtColor(bgr, *color, cv::COLOR_BGRA2BGR);
+  } else if (bgr.channels() == 3) {
+    *color = bgr;
+  } else {
+    return Status::InvalidArgument("image must have 1, 3 or 4 channels");
   }
-  cv::Mat color;
-  Status status = ToColor(bgr, &color);
-  if (!status.ok()) return status;
+  return Status::Ok();
+}
 
-  // The search region (from roi_top_fraction of the height down) at the working resolution.
-  const int roi_top =
-      std::clamp(static_cast<int>(options.roi_top_fraction * height), 0, height - kMinImageSide / 2);
-  JunctionSearchRegion region;
-  status = MakeJunctionSearchRegion(color, halved, roi_top, options.max_work_width, &region);
-  if (!status.ok()) return status;
-  const int scale = region.scale;
+// The first image row of the search region: roi_top_fraction of the height, leaving at least
+// half the smallest image side below it.
+int SearchTop(const JunctionDetectorOptions& options, int height) {
+  return std::clamp(static_cast<int>(options.roi_top_fraction * height), 0,
+                    height - kMinImageSide / 2);
+}
 
-  // Its edges and segments; too many edges are noise or texture, not a corridor.
-  const SegmentOptions segment_options = JunctionSegmentOptions(options, height, scale);
-  const EdgeSegments found = FindEdgeSegments(region, segment_options);
-  const double edge_density = EdgeDensity(found.edges);
-  if (edge_density > options.max_edge_density) {
-    std::ostringstream msg;
-    msg << "image is noise or texture: " << static_cast<int>(100 * edge_density)
-        << "% of the search region are edges";
-    return NoCorridor(result, msg.str());
-  }
-  result->segments = found.segments;
+// Stage: Canny edges and Hough segments of the search region; the segments in image pixels.
+EdgeSegments FindEdgeSegments(const JunctionSearchRegion& region, const SegmentOptions& options) {
+  EdgeSegments found = DetectSegments(region.work, region.work_roi_top, options);
+  SegmentsToImage(region, &found.segments);
+  return found;
+}
 
-  // The candidates (scene prior, boundary scores) and the best pair: the first look, then the
-  // second when it finds none.
+// Stage: more edges than max_edge_density of the search region are noise or texture, not a
+// corridor; true with the reason in *why.
+bool NoiseOrTexture(const cv::Mat& edges, const JunctionDetectorOptions& options,
+                    std::string* why) {
+  const double edge_density = EdgeDensity(edges);
+  if (!(edge_density > options.max_edge_density)) return false;
+  std::ostringstream msg;
+  msg << "image is noise or texture: " << static_cast<int>(100 * edge_density)
+      << "% of the search region are edges";
+  *why = msg.str();
+  return true;
+}
+
+// Stage: the candidates (scene prior, boundary scores against the floor's appearance) and the
+// best pair: the first look, then the second when it finds none (which, when taken, replaces
+// result->segments and sets result->relaxed_hough).
+PairSearch SearchPair(const cv::Mat& color, const JunctionSearchRegion& region,
+                      const EdgeSegments& found, const SegmentOptions& segment_options,
+                      const JunctionDetectorOptions& options, JunctionPair* result) {
+  const int width = color.cols, height = color.rows;
   const JunctionScenePrior prior = MakeJunctionScenePrior(options, width, height);
-  const FullResolutionRefit refit =
-      MakeFullResolutionRefit(color, scale, options, found.canny_high);
   FloorCues cues;
-  cues.roi = color.rowRange(roi_top, height);
-  cues.floor = SampleFloor(cues.roi, roi_top, 2 * scale);
-  cues.roi_top = roi_top;
-  cues.scale = scale;
+  cues.roi = color.rowRange(region.roi_top, height);
+  cues.floor = SampleFloor(cues.roi, region.roi_top, 2 * region.scale);
+  cues.roi_top = region.roi_top;
+  cues.scale = region.scale;
   const BaseboardBandTest band = MakeBandTest(options, cues);
   const Eigen::Vector2d size(width, height);
   PairSearch chosen = FirstLook(found.segments, options, prior, cues, size, band);
@@ -302,25 +249,116 @@ Status DetectJunctionsIn(const cv::Mat& bgr, const cv::Mat* halved,
       result->relaxed_hough = true;
     }
   }
+  return chosen;
+}
 
-  // No pair: a side without candidates (keep the other side's one junction), or no pair meets.
+// Stage, when a side has no candidate: the refusal, with the other side's one junction kept
+// (KeepSingleJunction) when it has candidates.
+Status OneSideOnly(const PairSearch& chosen, const std::vector<Eigen::Vector2d>& edges,
+                   const JunctionDetectorOptions& options, int height,
+                   const FullResolutionRefit& refit, JunctionPair* result) {
+  std::ostringstream msg;
+  msg << "no " << (chosen.left.empty() ? "left" : "right") << " junction candidate among "
+      << chosen.lines.size() << " lines";
+  const Status status = NoCorridor(result, msg.str());
+  if (!chosen.left.empty() || !chosen.right.empty()) {
+    const bool is_left = !chosen.left.empty();
+    KeepSingleJunction(is_left ? chosen.left : chosen.right, is_left, chosen.lines, edges,
+                       options, height, refit, result);
+  }
+  return status;
+}
+
+// Stage: the chosen pair's final lines (and the lower partners the baseboard rule left), refined
+// on their edge pixels and refitted at full resolution, and their vanishing point.
+void RefineChosenPair(const PairSearch& chosen, const std::vector<Eigen::Vector2d>& edges,
+                      double distance, int height, const FullResolutionRefit& refit,
+                      JunctionPair* result) {
+  const std::vector<JunctionCandidate>& left = chosen.left;
+  const std::vector<JunctionCandidate>& right = chosen.right;
+  const SelectedPair& pair = chosen.pair;
+  result->left = RefineJunction(left[pair.left], edges, pair.vanishing_point, true, distance,
+                                height);
+  result->right = RefineJunction(right[pair.right], edges, pair.vanishing_point, false, distance,
+                                 height);
+  if (pair.left_lower >= 0) {
+    result->left_lower =
+        RefineJunction(left[pair.left_lower], edges, pair.vanishing_point, true, distance, height);
+    result->has_left_lower = true;
+  }
+  if (pair.right_lower >= 0) {
+    result->right_lower = RefineJunction(right[pair.right_lower], edges, pair.vanishing_point,
+                                         false, distance, height);
+    result->has_right_lower = true;
+  }
+  for (JunctionLine* line : {&result->left, &result->right}) refit.Apply(line);
+  if (result->has_left_lower) refit.Apply(&result->left_lower);
+  if (result->has_right_lower) refit.Apply(&result->right_lower);
+  const Eigen::Vector3d vp = result->left.line.cross(result->right.line);
+  result->vanishing_point =
+      std::abs(vp.z()) > 1e-12 ? Eigen::Vector2d(vp.head<2>() / vp.z()) : pair.vanishing_point;
+}
+
+// Stage: the floor between the junctions (result->floor_texture, when enough of it is seen);
+// true, with the reason in *why, when it has too many strong edges along no corridor line for a
+// corridor floor (an outdoor scene, a still life).
+bool FloorIsTextured(const EdgeSegments& found, const JunctionSearchRegion& region,
+                     const JunctionDetectorOptions& options, JunctionPair* result,
+                     std::string* why) {
+  FloorTextureOptions texture_options;
+  texture_options.margin = 3.0 * region.scale;  // Clear of the junctions' own edges (the 5x5 reach).
+  texture_options.strong = options.strong_edge_gradient;
+  texture_options.line_tolerance_deg = options.floor_line_tolerance_deg;
+  const FloorTexture floor_texture =
+      MeasureFloorTexture(found.dx, found.dy, SearchRegionGrid(region), result->left.line,
+                          result->right.line, result->vanishing_point, texture_options);
+  if (floor_texture.floor_pixels >= kMinFloorPixels) {
+    result->floor_texture = floor_texture.odd_fraction;
+  }
+  if (!(result->floor_texture > options.max_floor_texture)) return false;
+  std::ostringstream msg;
+  msg.precision(2);
+  msg << "the floor between the junction lines is textured: " << 100 * floor_texture.odd_fraction
+      << "% of it are strong edges along no corridor line (a corridor floor has at most "
+      << 100 * options.max_floor_texture << "%); not a corridor";
+  *why = msg.str();
+  return true;
+}
+
+// The junction search, stage by stage; `halved` (may be null) as for the second DetectJunctions.
+Status DetectJunctionsIn(const cv::Mat& bgr, const cv::Mat* halved,
+                         const JunctionDetectorOptions& options, JunctionPair* result) {
+  *result = JunctionPair();
+  // The input: usable at all, large enough, as colour.
+  Status status = CheckInput(bgr, options);
+  if (!status.ok()) return status;
+  std::string why;
+  if (TooSmall(bgr, &why)) return NoCorridor(result, why);
+  cv::Mat color;
+  status = ToColor(bgr, &color);
+  if (!status.ok()) return status;
+  const int height = color.rows;
+  // The search region at the working resolution, its edges and segments.
+  JunctionSearchRegion region;
+  status = MakeJunctionSearchRegion(color, halved, SearchTop(options, height),
+                                    options.max_work_width, &region);
+  if (!status.ok()) return status;
+  const SegmentOptions segment_options = JunctionSegmentOptions(options, height, region.scale);
+  const EdgeSegments found = FindEdgeSegments(region, segment_options);
+  if (NoiseOrTexture(found.edges, options, &why)) return NoCorridor(result, why);
+  result->segments = found.segments;
+  // The candidates and the best pair of them.
+  const PairSearch chosen = SearchPair(color, region, found, segment_options, options, result);
+  const FullResolutionRefit refit =
+      MakeFullResolutionRefit(color, region.scale, options, found.canny_high);
   if (chosen.left.empty() || chosen.right.empty()) {
-    std::ostringstream msg;
-    msg << "no " << (chosen.left.empty() ? "left" : "right") << " junction candidate among "
-        << chosen.lines.size() << " lines";
-    status = NoCorridor(result, msg.str());
-    if (!chosen.left.empty() || !chosen.right.empty()) {
-      const bool is_left = !chosen.left.empty();
-      KeepSingleJunction(is_left ? chosen.left : chosen.right, is_left, chosen.lines,
-                         EdgePixelsInImage(region, found.edges), options, height, refit, result);
-    }
-    return status;
+    return OneSideOnly(chosen, EdgePixelsInImage(region, found.edges), options, height, refit,
+                       result);
   }
   if (chosen.pair.left < 0) {
     return NoCorridor(result, "no pair of lines meets at a vanishing point above the floor");
   }
-
-  // The pair's final lines, then the floor between them must look like a corridor's.
+  // The pair's final lines; the floor between them must look like a corridor's.
   RefineChosenPair(chosen, EdgePixelsInImage(region, found.edges), options.support_distance_px,
                    height, refit, result);
   if (options.max_floor_texture > 0 && FloorIsTextured(found, region, options, result, &why)) {
