@@ -18,10 +18,10 @@ namespace corridor {
 
 // The paper's scene prior (eq. 2) on a junction's length and inclination, in image pixels.
 struct JunctionScenePrior {
-  double min_length = 0;           // Shortest junction, px.
-  double max_length = 1e300;       // Longest junction, px.
-  double min_inclination_deg = 0;  // Flattest junction, degrees from horizontal.
-  double max_inclination_deg = 90; // Steepest junction, degrees from horizontal.
+  double min_length = 0;            // Shortest junction, px.
+  double max_length = 1e300;        // Longest junction, px.
+  double min_inclination_deg = 0;   // Flattest junction, degrees from horizontal.
+  double max_inclination_deg = 90;  // Steepest junction, degrees from horizontal.
 };
 
 // The prior of `options` for an image width x height. A negative max_inclination_deg reads the
@@ -40,9 +40,9 @@ struct FloorCues {
 
 // The lines that may be junctions, per side, and the best pair of them.
 struct PairSearch {
-  std::vector<MergedLine> lines;                // Every merged line.
-  std::vector<JunctionCandidate> left, right;   // Those the prior admits, by the side their slope says.
-  SelectedPair pair;                            // Indices into left and right; -1 when none.
+  std::vector<MergedLine> lines;               // Every merged line.
+  std::vector<JunctionCandidate> left, right;  // Those the prior admits, by the side their slope says.
+  SelectedPair pair;                           // Indices into left and right; -1 when none.
 };
 
 // Appends to `search`'s sides the lines of `lines` at least `shortest` px long that `prior`
