@@ -29,9 +29,8 @@ void AddJunctionCandidates(const std::vector<MergedLine>& lines, double shortest
         line.inclination_deg > prior.max_inclination_deg) {
       continue;
     }
-    JunctionCandidate candidate{line,
-                                BoundaryScore(cues.roi, cues.floor, line, cues.roi_top, cues.scale)};
-    (line.slope < 0 ? search->left : search->right).push_back(candidate);
+    const double boundary = BoundaryScore(cues.roi, cues.floor, line, cues.roi_top, cues.scale);
+    (line.slope < 0 ? search->left : search->right).push_back({line, boundary});
   }
 }
 

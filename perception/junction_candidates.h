@@ -41,7 +41,7 @@ struct FloorCues {
 // The lines that may be junctions, per side, and the best pair of them.
 struct PairSearch {
   std::vector<MergedLine> lines;               // Every merged line.
-  std::vector<JunctionCandidate> left, right;  // Those the prior admits, by the side their slope says.
+  std::vector<JunctionCandidate> left, right;  // Those the prior admits, by their slope's side.
   SelectedPair pair;                           // Indices into left and right; -1 when none.
 };
 

@@ -306,7 +306,8 @@ bool FloorIsTextured(const EdgeSegments& found, const JunctionSearchRegion& regi
                      const JunctionDetectorOptions& options, JunctionPair* result,
                      std::string* why) {
   FloorTextureOptions texture_options;
-  texture_options.margin = 3.0 * region.scale;  // Clear of the junctions' own edges (the 5x5 reach).
+  // Clear of the junctions' own edges (the 5x5 reach).
+  texture_options.margin = 3.0 * region.scale;
   texture_options.strong = options.strong_edge_gradient;
   texture_options.line_tolerance_deg = options.floor_line_tolerance_deg;
   const FloorTexture floor_texture =

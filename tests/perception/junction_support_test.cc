@@ -20,7 +20,8 @@ namespace {
 Eigen::Vector2d OnLine(double u) { return Eigen::Vector2d(u, 300 - 0.5 * u); }
 
 TEST(FloorSidePixelsTest, KeepsThePointsLeftOfAndBelowTheVanishingPointInOrder) {
-  const std::vector<Eigen::Vector2d> edges = {{10, 200}, {500, 200}, {10, 50}, {399, 100}, {400, 100}, {401, 150}};
+  const std::vector<Eigen::Vector2d> edges = {
+      {10, 200}, {500, 200}, {10, 50}, {399, 100}, {400, 100}, {401, 150}};
   const Eigen::Vector2d vp(400, 100);
   const std::vector<Eigen::Vector2d> left = FloorSidePixels(edges, vp, true);
   ASSERT_EQ(left.size(), 3u);
