@@ -1,0 +1,101 @@
+#include "perception/junction_support.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include <Eigen/Geometry>
+
+#include "perception/junction_detector.h"
+#include "perception/robust_line_fit.h"
+
+namespace corridor {
+namespace {
+
+// The points of `from` for which keep(p) holds, in order, into *to. Every point is written and
+// the count advanced only for the kept ones: no branch on where the points lie, which edge maps
+// make unpredictable.
+template <typename Keep>
+void KeepWhere(const std::vector<Eigen::Vector2d>& from, Keep keep,
+               std::vector<Eigen::Vector2d>* to) {
+  to->resize(from.size());
+  size_t kept = 0;
+  for (const auto& p : from) {
+    (*to)[kept] = p;
+    kept += static_cast<size_t>(keep(p));
+  }
+  to->resize(kept);
+}
+
+}  // namespace
+
+std::vector<Eigen::Vector2d> FloorSidePixels(const std::vector<Eigen::Vector2d>& edges,
+                                             const Eigen::Vector2d& vp, bool left) {
+  std::vector<Eigen::Vector2d> side;
+  KeepWhere(
+      edges, [&](const Eigen::Vector2d& p) {
+        const bool beyond = left ? p.x() > vp.x() : p.x() < vp.x();
+        return !beyond & !(p.y() < vp.y());
+      },
+      &side);
+  return side;
+}
+
+void SupportPixels(const std::vector<Eigen::Vector2d>& side, const Eigen::Vector3d& line,
+                   double distance, std::vector<Eigen::Vector2d>* support) {
+  KeepWhere(
+      side, [&](const Eigen::Vector2d& p) {
+        return !(std::abs(line.dot(p.homogeneous())) > distance);
+      },
+      support);
+}
+
+JunctionLine RefineJunction(const JunctionCandidate& candidate,
+                            const std::vector<Eigen::Vector2d>& edges, const Eigen::Vector2d& vp,
+                            bool left, double distance, double image_height) {
+  JunctionLine out;
+  Eigen::Vector3d line = candidate.line.line;
+  const std::vector<Eigen::Vector2d> side = FloorSidePixels(edges, vp, left);
+  std::vector<Eigen::Vector2d> support, fitted;  // `fitted`: the pixels `line` was fitted to.
+  bool final_support = false;                    // True once `support` is the final (distance, line) support.
+  for (int round = 0; round < 3; ++round) {
+    SupportPixels(side, line, round == 0 ? 2 * distance : distance, &support);
+    // The same pixels give the same fit (FitLineLeastDistance is deterministic): the line has
+    // converged.
+    if (round > 0 && support == fitted) {
+      final_support = true;
+      break;
+    }
+    Eigen::Vector3d refit;
+    if (!FitLineLeastDistance(support, &refit)) break;
+    line = refit;
+    fitted.swap(support);
+  }
+  if (!final_support) SupportPixels(side, line, distance, &support);
+  out.line = line;
+  const Eigen::Vector2d direction(line.y(), -line.x());
+  const Eigen::Vector2d origin = -line.z() * line.head<2>();
+  if (support.size() < 8) {
+    support = {candidate.line.start, candidate.line.end};
+  }
+  double lo = 1e300, hi = -1e300;
+  std::vector<int> bins;
+  for (const auto& p : support) {
+    const double t = (p - origin).dot(direction);
+    lo = std::min(lo, t);
+    hi = std::max(hi, t);
+    bins.push_back(static_cast<int>(std::floor(t)));
+  }
+  std::sort(bins.begin(), bins.end());
+  out.support_length = static_cast<double>(std::unique(bins.begin(), bins.end()) - bins.begin());
+  const Eigen::Vector2d a = origin + lo * direction, b = origin + hi * direction;
+  // The near end is the lower one (larger v).
+  out.near_end = a.y() > b.y() ? a : b;
+  out.far_end = a.y() > b.y() ? b : a;
+  out.support = std::move(support);
+  out.confidence = std::clamp(candidate.boundary, 0.0, 1.0) *
+                   std::min(1.0, out.support_length / (0.25 * image_height));
+  return out;
+}
+
+}  // namespace corridor
