@@ -1,4 +1,4 @@
-#include "perception/junction_lines.h"
+#include "corridor_depth/junction_lines.h"
 
 namespace corridor {
 

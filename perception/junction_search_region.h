@@ -8,7 +8,7 @@
 #include <Eigen/Core>
 #include <opencv2/core.hpp>
 
-#include "core/status.h"
+#include "corridor_depth/status.h"
 #include "perception/floor_texture.h"
 
 namespace corridor {

@@ -6,7 +6,7 @@
 
 #include <Eigen/Core>
 
-#include "perception/junction_lines.h"
+#include "corridor_depth/junction_lines.h"
 #include "perception/junction_selector.h"
 
 namespace corridor {
