@@ -55,6 +55,24 @@ double WallBand(const cv::Mat& bgr, const Camera& camera, const CorridorGeometry
   return BandContrast(bgr, floor, up, down, 0);
 }
 
+// The best support (CorridorLineSupport) of a floor junction on `side`'s wall at a distance
+// within a factor `spread` of `distance`: where a move would put the junction, give or take the
+// move's own uncertainty (the ceiling heights' ratio).
+double BestSupportNear(const cv::Mat& bgr, const Camera& camera,
+                       const CeilingDetectorOptions& ceiling, const CorridorGeometry& g, int side,
+                       double distance, double spread, ImageEdges* edges) {
+  double best = 0;
+  for (double r = 1 / spread; r <= spread + 1e-9; r += 0.01) {
+    CorridorGeometry moved = g;
+    double d[2] = {g.LeftDistance(), g.RightDistance()};
+    d[side] = distance * r;
+    moved.SetWallDistances(d[0], d[1]);
+    const double x = side == 0 ? -d[side] : d[side];
+    best = std::max(best, CorridorLineSupport(bgr, camera, moved, x, g.camera_height, ceiling, edges));
+  }
+  return best;
+}
+
 }  // namespace
 
 bool InnerLineCheckOptions::Check(std::string* why) const {
@@ -73,6 +91,10 @@ bool InnerLineCheckOptions::Check(std::string* why) const {
     reason = "min_band_contrast must be non-negative";
   } else if (!(min_baseboard_disagreement > 0 && std::isfinite(min_baseboard_disagreement))) {
     reason = "min_baseboard_disagreement must be positive";
+  } else if (!(min_target_support >= 0 && min_target_support <= 1)) {
+    reason = "min_target_support must be in [0, 1] (0 = no check)";
+  } else if (!(max_baseboard_height >= 0 && std::isfinite(max_baseboard_height))) {
+    reason = "max_baseboard_height must be >= 0 (0 = no limit)";
   }
   if (reason.empty()) return true;
   if (why != nullptr) *why = reason;
@@ -96,7 +118,8 @@ std::string DescribeInnerLineCheck(const InnerLineCheck& check) {
                           : "a line inside the floor")
       << " (its ceiling junction gave "
       << check.side_height[check.side] << " m, the other side's " << check.side_height[other]
-      << " m)";
+      << " m; its new junction on edges over " << std::setprecision(2) << check.target_support
+      << " of its view)";
   return how.str();
 }
 
@@ -163,6 +186,13 @@ InnerLineCheck CheckInnerLine(const cv::Mat& bgr, const Camera& camera,
       // Two measures of one ratio, the ceiling sides' and the floor boundary's: their mean.
       const double move = std::sqrt(ratio * factor);
       distance[outer] /= move;
+      // A baseboard's top puts its wall too far by h / (h - b) at most, b its height above the
+      // floor; and the junction below it shows on edges.
+      const double b = options.max_baseboard_height;
+      if (b > 0 && h > b && move > h / (h - b)) return check;
+      check.target_support =
+          BestSupportNear(bgr, camera, ceiling, *geometry, outer, distance[outer], 1.08, edges);
+      if (check.target_support < options.min_target_support) return check;
       geometry->SetWallDistances(distance[0], distance[1]);
       check.moved = true;
       check.baseboard = true;
@@ -184,6 +214,11 @@ InnerLineCheck CheckInnerLine(const cv::Mat& bgr, const Camera& camera,
       CorridorLineSupport(bgr, camera, *geometry, wall_x, h, ceiling, edges);
   if (check.line_support >= options.max_line_support) return check;
   distance[inner] *= factor;
+  // The true junction shows on edges somewhere along its view, between the boxes that hid it; a
+  // wall's plain face (where a correct wall would be moved out to) does not.
+  check.target_support =
+      BestSupportNear(bgr, camera, ceiling, *geometry, inner, distance[inner], 1.08, edges);
+  if (check.target_support < options.min_target_support) return check;
   geometry->SetWallDistances(distance[0], distance[1]);
   check.moved = true;
   check.side = inner;

@@ -21,6 +21,7 @@ struct InnerLineCheck {
   double side_height[2] = {0, 0};      // The wide search's ceiling height per side, m (0 = none).
   double side_support[2] = {0, 0};     // Their supports.
   double line_support = 0;             // The floor junction to move: its support (0 when not measured).
+  double target_support = -1;          // The junction where the move puts it: its best support within 8% of the move (-1 when not measured).
 };
 
 // Runs the check on the search image (`bgr` with `camera`, as the ceiling search sees them);

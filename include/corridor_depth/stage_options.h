@@ -126,6 +126,8 @@ struct InnerLineCheckOptions {
   double max_line_support = 0.8;             // A floor junction on edges of its orientation over this fraction of its samples in view (sampled as the ceiling search samples its lines) is not moved: a box's edge or floor line covers less.
   double min_band_contrast = 1.45;           // Both bands (see above) at least this unlike the floor below them (BandContrast, in floor spreads): a baseboard's top was taken on the far side, which moves in; 0 = never.
   double min_baseboard_disagreement = 0.08;  // Least relative difference of the two sides' ceiling heights that moves the far wall in (a baseboard's top is a few per cent of the camera height above the floor).
+  double max_baseboard_height = 0.2;         // The far wall moves in only as far as a baseboard's top this high explains (h / (h - b), h the camera height), m; 0 = no limit.
+  double min_target_support = 0.02;          // A wall moves only where its new junction follows edges (CorridorLineSupport, best within 8% of the move) on at least this fraction of its view: a junction hidden all along, or a wall's plain face, cannot confirm a move; 0 = no check.
 
   bool Check(std::string* why) const;
 };

@@ -1,0 +1,97 @@
+// The inner-line check moves a wall only where the image shows its new junction, and moves a wall
+// in only as far as a baseboard's top explains. Frames of the generator's real-buildings preset
+// (the same scenes and poses corridor_synth renders), truth from the generator's scene: each guard
+// keeps a frame right that the check without it puts wrong.
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "corridor_depth/recover_depth.h"
+#include "synth/corridor_renderer.h"
+#include "synth/real_buildings.h"
+
+namespace corridor {
+namespace {
+
+struct PresetFrame {
+  synth::Frame frame;
+  Camera camera;
+  double true_width = 0;
+};
+
+// Frame `index` of scene `scene` of a real-buildings class, rendered as the preset renders it.
+PresetFrame Render(const std::string& class_name, int scene, int index) {
+  synth::RealBuildingsOptions options;
+  options.scenes = scene + 1;
+  options.frames = index + 1;
+  std::vector<synth::ScenePreset> presets;
+  PresetFrame out;
+  if (!synth::RealBuildingsPreset(class_name, options, &presets).ok()) return out;
+  const synth::ScenePreset& preset = presets.at(scene);
+  out.camera = preset.camera;
+  out.true_width = preset.scene.width;
+  if (!synth::RenderFrame(preset.scene, preset.camera, preset.poses.at(index), &out.frame).ok()) {
+    out.frame.bgr.release();
+  }
+  return out;
+}
+
+// Relative width error of the recovered frame; NaN when it is not ok.
+double WidthError(const PresetFrame& f, const RecoverDepthOptions& options) {
+  RecoverDepthResult result;
+  if (!RecoverDepth(f.frame.bgr, f.camera, options, &result).ok()) return std::nan("");
+  return std::abs(result.geometry.width - f.true_width) / f.true_width;
+}
+
+// A window band on one wall: its top is read as that side's ceiling junction, far too high, so the
+// two ceiling sides disagree and the check would move the other, correct, wall out several times
+// its distance, onto the plain face of a wall that is not there. No edge follows the junction
+// there: the wall stays.
+TEST(InnerLineGuardTest, AWindowBandDoesNotMoveTheCorrectWallOut) {
+  for (const int index : {0, 1}) {
+    const PresetFrame f = Render("windows", 2, index);
+    ASSERT_FALSE(f.frame.bgr.empty());
+    RecoverDepthOptions options;
+    EXPECT_LT(WidthError(f, options), 0.03) << index;
+    options.inner_line.min_target_support = 0;
+    EXPECT_GT(WidthError(f, options), 0.5) << index;
+  }
+}
+
+// A head-mounted camera (about 1.6 m high): the check would move a wall in by 0.82, as a baseboard
+// top 0.3 m above the floor would explain. Either guard keeps the wall: such a baseboard is
+// taller than any, and no edge follows the junction where the wall would go.
+TEST(InnerLineGuardTest, AHighCameraDoesNotMoveAWallInFurtherThanABaseboardExplains) {
+  const PresetFrame f = Render("head", 4, 8);
+  ASSERT_FALSE(f.frame.bgr.empty());
+  RecoverDepthOptions options;
+  EXPECT_LT(WidthError(f, options), 0.03);
+  options.inner_line.min_target_support = 0;
+  EXPECT_LT(WidthError(f, options), 0.03);
+  options.inner_line.max_baseboard_height = 0;
+  EXPECT_GT(WidthError(f, options), 0.08);
+  options.inner_line.min_target_support = InnerLineCheckOptions().min_target_support;
+  EXPECT_LT(WidthError(f, options), 0.03);
+}
+
+TEST(InnerLineGuardTest, BadOptionsAreRejected) {
+  for (const double bad : {-0.1, 1.5, std::nan("")}) {
+    InnerLineCheckOptions options;
+    options.min_target_support = bad;
+    std::string why;
+    EXPECT_FALSE(options.Check(&why)) << bad;
+    EXPECT_NE(why.find("min_target_support"), std::string::npos) << why;
+  }
+  for (const double bad : {-0.1, std::nan("")}) {
+    InnerLineCheckOptions options;
+    options.max_baseboard_height = bad;
+    std::string why;
+    EXPECT_FALSE(options.Check(&why)) << bad;
+    EXPECT_NE(why.find("max_baseboard_height"), std::string::npos) << why;
+  }
+}
+
+}  // namespace
+}  // namespace corridor
