@@ -254,6 +254,8 @@ bool JunctionTrackerOptions::Check(std::string* why) const {
     reason = "redetect_interval must not be negative";
   } else if (!(agreement_px > 0)) {
     reason = "agreement_px must be positive";
+  } else if (!(min_line_confidence >= 0 && min_line_confidence <= 1)) {
+    reason = "min_line_confidence must be in [0, 1]";
   }
   if (why != nullptr) *why = reason;
   return reason.empty();
@@ -357,6 +359,14 @@ bool TrackJunctions(const cv::Mat& bgr, const JunctionPair& previous,
   }
   if (result.has_left_lower) result.has_left_lower = floor_side(&result.left_lower, true);
   if (result.has_right_lower) result.has_right_lower = floor_side(&result.right_lower, false);
+  // A weak line near the previous one may be a remnant of it (a faded stretch, a shadow) while the
+  // junction is elsewhere: a sequence never lets such a line stand for the frame's own search.
+  for (const JunctionLine* line : {&result.left, &result.right}) {
+    if (line->confidence < options.min_line_confidence) {
+      return fail(std::string("the ") + (line == &result.left ? "left" : "right") +
+                  " junction near the previous one is weak");
+    }
+  }
   result.status = Status::Ok();
   *tracked = std::move(result);
   return true;

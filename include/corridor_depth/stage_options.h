@@ -44,16 +44,17 @@ struct JunctionDetectorOptions {
 // Options of the junction tracker: in a sequence, the junctions are sought again in bands around
 // the previous frame's instead of in the whole search region.
 struct JunctionTrackerOptions {
-  double reach_fraction = 0.04;      // A band reaches this far either side of the previous line, along rows (columns), fraction of the image height.
-  int sample_step = 2;               // Edge points are sought on every this many rows (columns) of the detector's working scale.
-  double threshold = 20;             // Least colour gradient across the line (Sobel 3x3, the strongest channel) of an edge point.
-  double min_support = 0.4;          // Least fraction of a band's rows (columns) with an edge point on a line for it to be a candidate.
-  double max_shift_fraction = 0.03;  // The junctions may have moved at most this far from the previous ones (mean offset at the band's ends), fraction of the image height; farther, the whole region is searched.
-  int max_lines_per_band = 4;        // At most this many candidate lines per band, the best supported.
-  double extend_fraction = 0.15;     // The previous line's extent is searched lengthened by this fraction at each end.
-  double support_distance_px = 2;    // Edge points this close to a candidate line support it, px.
-  int redetect_interval = 10;        // After this many tracked frames in a row the whole region is searched again, and checked against its tracked pair (0 = never again once trusted).
-  double agreement_px = 2;           // A tracked and a searched junction within this of each other at both ends are the same line, px.
+  double reach_fraction = 0.04;       // A band reaches this far either side of the previous line, along rows (columns), fraction of the image height.
+  int sample_step = 2;                // Edge points are sought on every this many rows (columns) of the detector's working scale.
+  double threshold = 20;              // Least colour gradient across the line (Sobel 3x3, the strongest channel) of an edge point.
+  double min_support = 0.4;           // Least fraction of a band's rows (columns) with an edge point on a line for it to be a candidate.
+  double max_shift_fraction = 0.03;   // The junctions may have moved at most this far from the previous ones (mean offset at the band's ends), fraction of the image height; farther, the whole region is searched.
+  int max_lines_per_band = 4;         // At most this many candidate lines per band, the best supported.
+  double extend_fraction = 0.15;      // The previous line's extent is searched lengthened by this fraction at each end.
+  double support_distance_px = 2;     // Edge points this close to a candidate line support it, px.
+  int redetect_interval = 10;         // After this many tracked frames in a row the whole region is searched again, and checked against its tracked pair (0 = never again once trusted).
+  double agreement_px = 2;            // A tracked and a searched junction within this of each other at both ends are the same line, px.
+  double min_line_confidence = 0.15;  // A tracked line weaker than this (JunctionLine::confidence; the frame confidence counts it as weak) leaves the frame to the whole search.
 
   bool Check(std::string* why) const;
 };

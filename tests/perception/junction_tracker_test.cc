@@ -76,6 +76,26 @@ TEST_F(JunctionTrackerTest, TheNextFramesJunctionsLandOnTheTrueOnes) {
   EXPECT_NEAR(tracked.right.line.dot(tracked.vanishing_point.homogeneous()), 0, 1e-6);
 }
 
+// The same frames: a tracked line weaker than min_line_confidence leaves the frame to the whole
+// search, and says which; the tracked lines' own confidence sets where that happens.
+TEST_F(JunctionTrackerTest, AWeakTrackedLineIsLeftToTheWholeSearch) {
+  const synth::Frame frame0 = Render(pose0_), frame1 = Render(pose1_);
+  JunctionPair previous;
+  ASSERT_TRUE(DetectJunctions(frame0.bgr, detector_, &previous).ok());
+  JunctionPair tracked;
+  std::string why;
+  ASSERT_TRUE(TrackJunctions(frame1.bgr, previous, detector_, options_, &tracked, &why)) << why;
+  const double weaker = std::min(tracked.left.confidence, tracked.right.confidence);
+  ASSERT_GE(weaker, options_.min_line_confidence) << "premise: a plain corridor's lines are strong";
+  JunctionTrackerOptions demanding = options_;
+  demanding.min_line_confidence = std::min(1.0, weaker + 1e-6);
+  JunctionPair again;
+  EXPECT_FALSE(TrackJunctions(frame1.bgr, previous, detector_, demanding, &again, &why));
+  EXPECT_NE(why.find("weak"), std::string::npos) << why;
+  demanding.min_line_confidence = weaker;
+  EXPECT_TRUE(TrackJunctions(frame1.bgr, previous, detector_, demanding, &again, &why)) << why;
+}
+
 TEST_F(JunctionTrackerTest, JunctionsThatMovedFarAreLost) {
   const synth::Frame frame0 = Render(pose0_);
   synth::CameraPose far_pose = pose0_;
@@ -138,6 +158,9 @@ TEST(JunctionTrackerOptionsTest, EachBadOptionIsNamed) {
   o = JunctionTrackerOptions();
   o.max_shift_fraction = -0.1;
   EXPECT_NE(message(o).find("max_shift_fraction"), std::string::npos);
+  o = JunctionTrackerOptions();
+  o.min_line_confidence = 1.5;
+  EXPECT_NE(message(o).find("min_line_confidence"), std::string::npos);
   o = JunctionTrackerOptions();
   o.max_lines_per_band = 0;
   EXPECT_NE(message(o).find("max_lines_per_band"), std::string::npos);
