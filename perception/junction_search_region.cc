@@ -13,7 +13,8 @@ Status MakeJunctionSearchRegion(const cv::Mat& color, const cv::Mat* halved, int
   const int scale = WorkingScale(width, max_work_width);
   int crop_top = scale == 1 ? 0 : std::max(0, roi_top - 4 * scale) / scale * scale;
   cv::Mat work = color.rowRange(crop_top, height);
-  if (halved != nullptr && scale > 1) {
+  if (halved != nullptr) {
+    // The caller's image must be the whole image halved `scale` times over (itself at scale 1).
     cv::Size size(width, height);
     for (int s = 1; s < scale; s *= 2) size = cv::Size((size.width + 1) / 2, (size.height + 1) / 2);
     if (halved->size() != size || halved->type() != CV_8UC3) {
@@ -21,6 +22,8 @@ Status MakeJunctionSearchRegion(const cv::Mat& color, const cv::Mat* halved, int
           "junction detector: the halved image is not the image's "
           "pyrDown to max_work_width");
     }
+  }
+  if (halved != nullptr && scale > 1) {
     crop_top = 0;
     work = *halved;
   } else {

@@ -97,5 +97,18 @@ TEST(JunctionSearchRegionTest, ACallersHalvedImageIsTheWholeImage) {
             StatusCode::kInvalidArgument);
 }
 
+// An image that needs no halving: the caller's image must be the image itself (its size and
+// type), as the header says; another one is refused, not silently ignored.
+TEST(JunctionSearchRegionTest, ACallersImageIsCheckedWhenNoHalvingIsNeeded) {
+  const cv::Mat color(480, 640, CV_8UC3, cv::Scalar(90, 90, 90));
+  JunctionSearchRegion region;
+  EXPECT_TRUE(MakeJunctionSearchRegion(color, &color, 240, 640, &region).ok());
+  EXPECT_EQ(region.scale, 1);
+  cv::Mat halved;
+  PyrDown(color, &halved);
+  EXPECT_EQ(MakeJunctionSearchRegion(color, &halved, 240, 640, &region).code(),
+            StatusCode::kInvalidArgument);
+}
+
 }  // namespace
 }  // namespace corridor
