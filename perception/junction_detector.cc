@@ -258,8 +258,10 @@ Status OneSideOnly(const PairSearch& chosen, const std::vector<Eigen::Vector2d>&
                    const JunctionDetectorOptions& options, int height,
                    const FullResolutionRefit& refit, JunctionPair* result) {
   std::ostringstream msg;
-  msg << "no " << (chosen.left.empty() ? "left" : "right") << " junction candidate among "
-      << chosen.lines.size() << " lines";
+  const char* side = chosen.left.empty() && chosen.right.empty() ? "left or right"
+                     : chosen.left.empty()                       ? "left"
+                                                                 : "right";
+  msg << "no " << side << " junction candidate among " << chosen.lines.size() << " lines";
   const Status status = NoCorridor(result, msg.str());
   if (!chosen.left.empty() || !chosen.right.empty()) {
     const bool is_left = !chosen.left.empty();

@@ -64,6 +64,17 @@ TEST(JunctionDetectorTest, DegenerateImagesFindNoCorridor) {
   }
 }
 
+// A blank image has no line at all: the refusal names both sides, not only the left one.
+TEST(JunctionDetectorTest, ABlankImageNamesBothMissingSides) {
+  JunctionPair pair;
+  ASSERT_TRUE(
+      DetectJunctions(cv::Mat(240, 320, CV_8UC3, cv::Scalar::all(0)), JunctionDetectorOptions(),
+                      &pair)
+          .ok());
+  EXPECT_NE(pair.status.message().find("no left or right junction candidate"), std::string::npos)
+      << pair.status.ToString();
+}
+
 TEST(JunctionDetectorTest, EmptyOrWrongDepthImageIsInvalid) {
   JunctionPair pair;
   EXPECT_EQ(DetectJunctions(cv::Mat(), JunctionDetectorOptions(), &pair).code(),
