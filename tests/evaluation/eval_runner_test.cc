@@ -12,7 +12,7 @@
 namespace corridor {
 namespace {
 
-using testing_util::EvalTestGeometry;
+using testing_util::ReliabilityGeometry;
 
 // The scenes of a dataset root, as a research user loads them.
 std::vector<EvalScene> LoadScenes(const std::string& root) {
@@ -107,11 +107,11 @@ TEST(EvaluateScenes, SameNumbersForEveryThreadCount) {
   testing_util::EvalTempDir dir("runner");
   testing_util::WriteEvalTestScene(
       dir.Path("data"), "Cord_E01",
-      {EvalTestGeometry(0.05, 0.08, 0.1, 2.1), EvalTestGeometry(-0.1, 0.05, -0.2, 2.1),
-       EvalTestGeometry(0.15, 0.1, 0.0, 2.1)});
+      {ReliabilityGeometry(0.05, 0.08, 0.1, 2.1), ReliabilityGeometry(-0.1, 0.05, -0.2, 2.1),
+       ReliabilityGeometry(0.15, 0.1, 0.0, 2.1)});
   testing_util::WriteEvalTestScene(
       dir.Path("data"), "Cord_H01",
-      {EvalTestGeometry(0.0, 0.06, 0.3, 3.0), EvalTestGeometry(0.2, 0.09, -0.1, 3.0)});
+      {ReliabilityGeometry(0.0, 0.06, 0.3, 3.0), ReliabilityGeometry(0.2, 0.09, -0.1, 3.0)});
   std::ofstream(dir.Path("data/Cord_H01/rgb/001.png"), std::ios::trunc) << "broken";
   const std::vector<EvalScene> scenes = LoadScenes(dir.Path("data"));
   ASSERT_EQ(scenes.size(), 2u);

@@ -1,8 +1,9 @@
 #pragma once
 
 // A small corridor dataset on disk for the corridor_eval tests, in the dataset layout of
-// io/dataset.h: flat-shaded corridor boxes rendered with the independent box ray caster of
-// tests/depth/box_truth.h, their depth as 16-bit millimetre PNGs, camera.yaml and truth.yaml.
+// io/dataset.h: flat-shaded corridor boxes (tests/reliability/corridor_image.h, rendered with
+// the independent box ray caster of tests/depth/box_truth.h), their depth as 16-bit millimetre
+// PNGs, camera.yaml and truth.yaml.
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -15,7 +16,7 @@
 
 #include "corridor_depth/camera_yaml.h"
 #include "corridor_depth/truth_yaml.h"
-#include "tests/depth/box_truth.h"
+#include "tests/reliability/corridor_image.h"
 
 namespace corridor {
 namespace testing_util {
@@ -42,54 +43,6 @@ class EvalTempDir {
   std::filesystem::path path_;
 };
 
-inline Camera EvalTestCamera() {
-  Camera c;
-  c.image_width = 320;
-  c.image_height = 240;
-  c.fx = c.fy = 250;
-  c.cx = 159.5;
-  c.cy = 119.5;
-  c.mount_height = 1.2;
-  return c;
-}
-
-inline CorridorGeometry EvalTestGeometry(double yaw, double pitch, double offset, double width) {
-  CorridorGeometry g;
-  g.yaw = yaw;
-  g.pitch = pitch;
-  g.offset = offset;
-  g.width = width;
-  g.camera_height = 1.2;
-  return g;
-}
-
-// The corridor as the camera sees it: floor dark grey, walls light, ceiling lighter, the far end
-// (beyond 60 m) black, with seeded noise. `depth` gets the camera-frame z in metres (0 beyond
-// 60 m).
-inline cv::Mat RenderCorridor(const Camera& camera, const CorridorGeometry& g, int seed,
-                              cv::Mat* depth) {
-  cv::Mat image(camera.image_height, camera.image_width, CV_8UC3);
-  *depth = cv::Mat::zeros(image.size(), CV_32F);
-  cv::RNG rng(seed);
-  for (int v = 0; v < image.rows; ++v) {
-    for (int u = 0; u < image.cols; ++u) {
-      int surface = -1;
-      const double z = testing::BoxDepth(camera, g, u, v, &surface);
-      double shade = 20;
-      if (std::isfinite(z) && z <= 60) {
-        depth->at<float>(v, u) = static_cast<float>(z);
-        shade = surface == 0 ? 70 : surface == 1 ? 190
-                                                 : 225;
-      }
-      const double noise = rng.gaussian(2.0);
-      image.at<cv::Vec3b>(v, u) = cv::Vec3b(cv::saturate_cast<uchar>(shade + noise),
-                                            cv::saturate_cast<uchar>(shade + 5 + noise),
-                                            cv::saturate_cast<uchar>(shade + 10 + noise));
-    }
-  }
-  return image;
-}
-
 // Writes <root>/<scene>/{rgb,depth}/<NNN>.png for each pose, with camera.yaml and truth.yaml.
 inline void WriteEvalTestScene(const std::string& root, const std::string& scene,
                                const std::vector<CorridorGeometry>& poses) {
@@ -97,14 +50,14 @@ inline void WriteEvalTestScene(const std::string& root, const std::string& scene
   const fs::path dir = fs::path(root) / scene;
   fs::create_directories(dir / "rgb");
   fs::create_directories(dir / "depth");
-  const Camera camera = EvalTestCamera();
+  const Camera camera = ReliabilityCamera();
   ASSERT_TRUE(WriteCameraYaml((dir / "camera.yaml").string(), camera).ok());
   std::vector<FrameTruth> truths;
   for (size_t i = 0; i < poses.size(); ++i) {
     char name[32];
     std::snprintf(name, sizeof(name), "%03zu", i);
     cv::Mat depth;
-    const cv::Mat image = RenderCorridor(camera, poses[i], static_cast<int>(i) + 1, &depth);
+    const cv::Mat image = RenderTestCorridor(camera, poses[i], static_cast<int>(i) + 1, &depth);
     cv::Mat mm;
     depth.convertTo(mm, CV_16U, 1000.0);
     ASSERT_TRUE(cv::imwrite((dir / "rgb" / (std::string(name) + ".png")).string(), image));

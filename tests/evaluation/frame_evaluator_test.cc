@@ -25,16 +25,16 @@ std::unique_ptr<DepthRecoverer> MakeRecoverer() {
 // One scene "Cord_E01" with a real corridor frame 000 at the given pose.
 EvalScene MakeScene(const EvalTempDir& dir) {
   testing_util::WriteEvalTestScene(dir.Path("data"), "Cord_E01",
-                                   {testing_util::EvalTestGeometry(0.05, 0.08, 0.1, 2.1)});
+                                   {testing_util::ReliabilityGeometry(0.05, 0.08, 0.1, 2.1)});
   EvalScene scene;
   scene.name = "Cord_E01";
-  scene.camera = testing_util::EvalTestCamera();
+  scene.camera = testing_util::ReliabilityCamera();
   DatasetFrame frame;
   frame.name = "000";
   frame.rgb_path = dir.Path("data/Cord_E01/rgb/000.png");
   frame.depth_path = dir.Path("data/Cord_E01/depth/000.png");
   frame.has_truth = true;
-  frame.truth.geometry = testing_util::EvalTestGeometry(0.05, 0.08, 0.1, 2.1);
+  frame.truth.geometry = testing_util::ReliabilityGeometry(0.05, 0.08, 0.1, 2.1);
   scene.frames.push_back(frame);
   return scene;
 }

@@ -37,16 +37,22 @@ inline CorridorGeometry ReliabilityGeometry(double yaw = 0.05, double pitch = 0.
   return g;
 }
 
-inline cv::Mat RenderTestCorridor(const Camera& camera, const CorridorGeometry& g, int seed = 1) {
+// `depth` (may be null) gets the camera-frame z in metres (0 beyond 60 m).
+inline cv::Mat RenderTestCorridor(const Camera& camera, const CorridorGeometry& g, int seed = 1,
+                                  cv::Mat* depth = nullptr) {
   cv::Mat image(camera.image_height, camera.image_width, CV_8UC3);
+  if (depth != nullptr) *depth = cv::Mat::zeros(image.size(), CV_32F);
   cv::RNG rng(seed);
   for (int v = 0; v < image.rows; ++v) {
     for (int u = 0; u < image.cols; ++u) {
       int surface = -1;
       const double z = testing::BoxDepth(camera, g, u, v, &surface);
       double shade = 20;
-      if (std::isfinite(z) && z <= 60) shade = surface == 0 ? 70 : surface == 1 ? 190
-                                                                                : 225;
+      if (std::isfinite(z) && z <= 60) {
+        if (depth != nullptr) depth->at<float>(v, u) = static_cast<float>(z);
+        shade = surface == 0 ? 70 : surface == 1 ? 190
+                                                 : 225;
+      }
       const double noise = rng.gaussian(2.0);
       image.at<cv::Vec3b>(v, u) = cv::Vec3b(cv::saturate_cast<uchar>(shade + noise),
                                             cv::saturate_cast<uchar>(shade + 5 + noise),

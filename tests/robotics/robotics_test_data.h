@@ -31,13 +31,13 @@ struct TestFrames {
 
 inline TestFrames MakeTestFrames() {
   TestFrames frames;
-  frames.camera = EvalTestCamera();
-  frames.poses = {EvalTestGeometry(0.05, 0.10, 0.20, 2.4), EvalTestGeometry(-0.04, 0.12, -0.15, 2.4),
-                  EvalTestGeometry(0.02, 0.09, 0.05, 2.4)};
+  frames.camera = ReliabilityCamera();
+  frames.poses = {ReliabilityGeometry(0.05, 0.10, 0.20, 2.4), ReliabilityGeometry(-0.04, 0.12, -0.15, 2.4),
+                  ReliabilityGeometry(0.02, 0.09, 0.05, 2.4)};
   for (size_t i = 0; i < frames.poses.size(); ++i) {
     cv::Mat depth;
     frames.images.push_back(
-        RenderCorridor(frames.camera, frames.poses[i], static_cast<int>(i) + 7, &depth));
+        RenderTestCorridor(frames.camera, frames.poses[i], static_cast<int>(i) + 7, &depth));
     frames.depths.push_back(depth);
   }
   return frames;

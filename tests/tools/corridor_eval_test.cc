@@ -19,7 +19,7 @@ namespace corridor {
 namespace {
 
 using testing_util::EvalTempDir;
-using testing_util::EvalTestGeometry;
+using testing_util::ReliabilityGeometry;
 
 const std::string kBinary = CORRIDOR_BINARY_DIR "/tools/corridor_eval";
 
@@ -42,12 +42,12 @@ int RunEval(const EvalTempDir& dir, const std::string& args, std::string* err) {
 void MakeDataset(const std::string& root) {
   testing_util::WriteEvalTestScene(
       root, "Cord_E01_z",
-      {EvalTestGeometry(0.05, 0.08, 0.1, 2.1), EvalTestGeometry(-0.1, 0.05, -0.2, 2.1),
-       EvalTestGeometry(0.12, 0.1, 0.0, 2.1)});
+      {ReliabilityGeometry(0.05, 0.08, 0.1, 2.1), ReliabilityGeometry(-0.1, 0.05, -0.2, 2.1),
+       ReliabilityGeometry(0.12, 0.1, 0.0, 2.1)});
   testing_util::WriteEvalTestScene(
       root, "Cord_H01_z",
-      {EvalTestGeometry(0.0, 0.06, 0.3, 3.0), EvalTestGeometry(0.2, 0.09, -0.1, 3.0),
-       EvalTestGeometry(-0.05, 0.07, 0.1, 3.0)});
+      {ReliabilityGeometry(0.0, 0.06, 0.3, 3.0), ReliabilityGeometry(0.2, 0.09, -0.1, 3.0),
+       ReliabilityGeometry(-0.05, 0.07, 0.1, 3.0)});
   std::ofstream(root + "/Cord_H01_z/rgb/001.png", std::ios::trunc) << "broken";
   cv::imwrite(root + "/Cord_H01_z/depth/002.png", cv::Mat(24, 32, CV_16U, cv::Scalar(3000)));
 }
@@ -129,7 +129,7 @@ TEST(CorridorEval, ReportMatchesAHandComputedAbsRel) {
 TEST(CorridorEval, CompareWritesEachConfiguration) {
   EvalTempDir dir("binary");
   testing_util::WriteEvalTestScene(dir.Path("data"), "E1",
-                                   {EvalTestGeometry(0.05, 0.08, 0.1, 2.1)});
+                                   {ReliabilityGeometry(0.05, 0.08, 0.1, 2.1)});
   std::string err;
   const int code = RunEval(dir,
                            "--dataset=" + dir.Path("data") + " --output_dir=" + dir.Path("out") +
@@ -150,7 +150,7 @@ TEST(CorridorEval, CompareWritesEachConfiguration) {
 TEST(CorridorEval, BadUsageExitsTwoWithAMessage) {
   EvalTempDir dir("binary");
   testing_util::WriteEvalTestScene(dir.Path("data"), "E1",
-                                   {EvalTestGeometry(0.05, 0.08, 0.1, 2.1)});
+                                   {ReliabilityGeometry(0.05, 0.08, 0.1, 2.1)});
   const std::string io = " --dataset=" + dir.Path("data") + " --output_dir=" + dir.Path("out");
   std::string err;
   EXPECT_EQ(RunEval(dir, io + " --threads=-1", &err), 2);
