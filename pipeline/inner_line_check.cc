@@ -57,18 +57,15 @@ double WallBand(const cv::Mat& bgr, const Camera& camera, const CorridorGeometry
 
 // The best support (CorridorLineSupport) of a floor junction on `side`'s wall at a distance
 // within a factor `spread` of `distance`: where a move would put the junction, give or take the
-// move's own uncertainty (the ceiling heights' ratio).
+// move's own uncertainty (the ceiling heights' ratio). Only g's rotation and camera height are
+// used: the line is placed by its own distance.
 double BestSupportNear(const cv::Mat& bgr, const Camera& camera,
                        const CeilingDetectorOptions& ceiling, const CorridorGeometry& g, int side,
                        double distance, double spread, ImageEdges* edges) {
+  const double x = side == 0 ? -distance : distance;
   double best = 0;
   for (double r = 1 / spread; r <= spread + 1e-9; r += 0.01) {
-    CorridorGeometry moved = g;
-    double d[2] = {g.LeftDistance(), g.RightDistance()};
-    d[side] = distance * r;
-    moved.SetWallDistances(d[0], d[1]);
-    const double x = side == 0 ? -d[side] : d[side];
-    best = std::max(best, CorridorLineSupport(bgr, camera, moved, x, g.camera_height, ceiling, edges));
+    best = std::max(best, CorridorLineSupport(bgr, camera, g, x * r, g.camera_height, ceiling, edges));
   }
   return best;
 }
