@@ -49,6 +49,26 @@ bool Mean3x3(const cv::Mat& bgr, const Eigen::Vector2d& p, int roi_top, int spac
   return true;
 }
 
+// The median Lab colour of 8-bit BGR pixels and their median distance to it (at least 1).
+FloorAppearance AppearanceOf(const std::vector<cv::Vec3b>& patch) {
+  // Each channel's median (the middle element, as Median takes it) from a count of its 256
+  // values instead of a partial sort.
+  std::array<std::array<int, 256>, 3> counts{};
+  std::vector<cv::Vec3f> pixels;
+  pixels.reserve(patch.size());
+  for (const cv::Vec3b& lab : BgrToLab(patch)) {
+    pixels.push_back(cv::Vec3f(lab));
+    for (int c = 0; c < 3; ++c) ++counts[c][lab[c]];
+  }
+  FloorAppearance floor;
+  for (int c = 0; c < 3; ++c) floor.lab[c] = MiddleByte(counts[c], pixels.size());
+  std::vector<float> distances;
+  distances.reserve(pixels.size());
+  for (const auto& p : pixels) distances.push_back(LabDistance(p, floor.lab));
+  floor.spread = std::max(1.0f, Median(&distances));
+  return floor;
+}
+
 }  // namespace
 
 float LabDistance(const cv::Vec3f& a, const cv::Vec3f& b) {
@@ -79,22 +99,27 @@ FloorAppearance SampleFloor(const cv::Mat& bgr, int roi_top, int step) {
   for (int v = v0; v < rows; v += step) {
     for (int u = u0; u < u1; u += step) patch.push_back(bgr.at<cv::Vec3b>(v, u));
   }
-  // Each channel's median (the middle element, as Median takes it) from a count of its 256
-  // values instead of a partial sort.
-  std::array<std::array<int, 256>, 3> counts{};
-  std::vector<cv::Vec3f> pixels;
-  pixels.reserve(patch.size());
-  for (const cv::Vec3b& lab : BgrToLab(patch)) {
-    pixels.push_back(cv::Vec3f(lab));
-    for (int c = 0; c < 3; ++c) ++counts[c][lab[c]];
+  return AppearanceOf(patch);
+}
+
+FloorAppearance SampleBelowLine(const cv::Mat& bgr, const MergedLine& line, int roi_top,
+                                int scale) {
+  const Eigen::Vector2d normal = line.line.head<2>();  // Points down (toward the floor).
+  const int samples = 24;
+  const int spacing = std::max(1, scale);
+  std::vector<cv::Vec3b> patch;
+  for (int i = 0; i < samples; ++i) {
+    const Eigen::Vector2d p = line.start + (line.end - line.start) * ((i + 0.5) / samples);
+    const Eigen::Vector2d below = p + 4.0 * spacing * normal;
+    const int u = cvRound(below.x()), v = cvRound(below.y()) - roi_top;
+    if (u < spacing || v < spacing || u >= bgr.cols - spacing || v >= bgr.rows - spacing) continue;
+    for (int dv = -spacing; dv <= spacing; dv += spacing) {
+      for (int du = -spacing; du <= spacing; du += spacing) {
+        patch.push_back(bgr.at<cv::Vec3b>(v + dv, u + du));
+      }
+    }
   }
-  FloorAppearance floor;
-  for (int c = 0; c < 3; ++c) floor.lab[c] = MiddleByte(counts[c], pixels.size());
-  std::vector<float> distances;
-  distances.reserve(pixels.size());
-  for (const auto& p : pixels) distances.push_back(LabDistance(p, floor.lab));
-  floor.spread = std::max(1.0f, Median(&distances));
-  return floor;
+  return AppearanceOf(patch);
 }
 
 double BoundaryScore(const cv::Mat& bgr, const FloorAppearance& floor, const MergedLine& line,

@@ -28,6 +28,12 @@ std::vector<cv::Vec3b> BgrToLab(const std::vector<cv::Vec3b>& bgr);
 // wide; large images need no more samples than that).
 FloorAppearance SampleFloor(const cv::Mat& bgr, int roi_top, int step = 2);
 
+// The appearance of the strip 4 `scale` px below `line` (where BoundaryScore looks for floor), as
+// SampleFloor gives it for the reference patch: the floor next to a junction that the reference
+// patch does not show (a runner covers the bottom centre). `bgr` as for SampleFloor.
+FloorAppearance SampleBelowLine(const cv::Mat& bgr, const MergedLine& line, int roi_top,
+                                int scale = 1);
+
 // How much a line looks like the floor's upper boundary, in [0, 1]: the floor-likeness of the
 // strip just below it times the unlikeness of the strip above. Near 1 for the junction; near 0
 // for lines inside the floor (grout, reflections: floor on both sides) and on the wall (baseboard

@@ -34,9 +34,12 @@ void AddJunctionCandidates(const std::vector<MergedLine>& lines, double shortest
   }
 }
 
-void SelectPair(const Eigen::Vector2d& size, const BaseboardBandTest& band, PairSearch* search) {
+void SelectPair(const Eigen::Vector2d& size, const BaseboardBandTest& band, const FloorCues& cues,
+                PairSearch* search) {
   if (search->left.empty() || search->right.empty()) return;
-  search->pair = SelectJunctionPair(search->left, search->right, search->lines, size, band);
+  search->pair =
+      SelectJunctionPair(&search->left, &search->right, search->lines, size, band,
+                         cues.floor_band);
 }
 
 PairSearch FirstLook(const std::vector<cv::Vec4f>& segments,
@@ -46,7 +49,7 @@ PairSearch FirstLook(const std::vector<cv::Vec4f>& segments,
   PairSearch search;
   search.lines = MergeSegments(segments, options.merge_angle_deg, options.merge_distance_px);
   AddJunctionCandidates(search.lines, prior.min_length, prior, cues, &search);
-  SelectPair(size, band, &search);
+  SelectPair(size, band, cues, &search);
   return search;
 }
 
@@ -72,7 +75,7 @@ bool SecondLook(const EdgeSegments& found, const SegmentOptions& segment_options
   const int new_right = static_cast<int>(second.right.size());
   second.left.insert(second.left.end(), first->left.begin(), first->left.end());
   second.right.insert(second.right.end(), first->right.begin(), first->right.end());
-  SelectPair(size, band, &second);
+  SelectPair(size, band, cues, &second);
   const SelectedPair& p = second.pair;
   const bool left_new = p.left < new_left, right_new = p.right < new_right;
   if (p.left >= 0 && left_new != right_new &&

@@ -35,7 +35,8 @@ struct FloorCues {
   cv::Mat roi;  // The colour image's rows [roi_top, rows).
   FloorAppearance floor;
   int roi_top = 0;
-  int scale = 1;  // The search's working scale (BoundaryScore's probe spacing).
+  int scale = 1;             // The search's working scale (BoundaryScore's probe spacing).
+  FloorBandTest floor_band;  // The selector's floor rule (none when its measure is empty).
 };
 
 // The lines that may be junctions, per side, and the best pair of them.
@@ -53,7 +54,8 @@ void AddJunctionCandidates(const std::vector<MergedLine>& lines, double shortest
 
 // SelectJunctionPair on `search`'s sides, in an image of `size` (width, height); nothing when a
 // side is empty.
-void SelectPair(const Eigen::Vector2d& size, const BaseboardBandTest& band, PairSearch* search);
+void SelectPair(const Eigen::Vector2d& size, const BaseboardBandTest& band, const FloorCues& cues,
+                PairSearch* search);
 
 // The first look: `segments` (image pixels) merged, their candidates and the best pair.
 PairSearch FirstLook(const std::vector<cv::Vec4f>& segments,

@@ -10,6 +10,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "perception/appearance.h"
+#include "perception/floor_band.h"
 #include "perception/floor_texture.h"
 #include "perception/junction_candidates.h"
 #include "perception/junction_refit.h"
@@ -60,6 +61,8 @@ bool JunctionDetectorOptions::Check(std::string* why) const {
   } else if (!(min_inclination_deg >= 0 && min_inclination_deg < 90 &&
                max_inclination_deg <= 90)) {
     reason = "inclination bounds must lie in [0, 90] degrees";
+  } else if (floor_band_min_across < 0) {
+    reason = "floor_band_min_across must be >= 0 (0 = off)";
   } else if (!(support_distance_px > 0)) {
     reason = "support_distance_px must be positive";
   } else if (!(baseboard_band_contrast >= 0 && baseboard_band_contrast <= 1e6)) {
@@ -239,6 +242,22 @@ PairSearch SearchPair(const cv::Mat& color, const JunctionSearchRegion& region,
   cues.roi_top = region.roi_top;
   cues.scale = region.scale;
   const BaseboardBandTest band = MakeBandTest(options, cues);
+  if (options.floor_band_min_across > 0) {
+    cues.floor_band.min_across = options.floor_band_min_across;
+    BandEdgeOptions band_options;
+    band_options.margin = 3.0 * region.scale;  // Clear of the lines' own edges (the 5x5 reach).
+    const GradientGrid grid = SearchRegionGrid(region);
+    cues.floor_band.measure = [&found, grid, band_options](const MergedLine& inner,
+                                                           const MergedLine& outer,
+                                                           const Eigen::Vector2d& vp) {
+      return MeasureBandEdges(found.edges, found.dx, found.dy, grid, inner.line, outer.line, vp,
+                              band_options);
+    };
+    cues.floor_band.boundary = [&cues](const MergedLine& outer) {
+      return BoundaryScore(cues.roi, SampleBelowLine(cues.roi, outer, cues.roi_top, cues.scale),
+                           outer, cues.roi_top, cues.scale);
+    };
+  }
   const Eigen::Vector2d size(width, height);
   PairSearch chosen = FirstLook(found.segments, options, prior, cues, size, band);
   if (chosen.pair.left < 0 && options.relaxed_hough_threshold > 0) {

@@ -119,13 +119,58 @@ void ApplyBaseboardRule(const std::vector<JunctionCandidate>& side, const Eigen:
   }
 }
 
+// Lines above lines: a runner's edge, its border, a stripe; more is not a floor's pattern.
+constexpr int kMaxFloorSteps = 3;
+
+// True when `band`'s edges say floor (see FloorBandTest).
+bool IsFloorBand(const BandEdges& band, const FloorBandTest& test) {
+  return band.across >= test.min_across && band.across_rows >= test.min_across_rows &&
+         band.vertical <= test.max_vertical_ratio * static_cast<double>(band.across);
+}
+
+// The floor rule on one side: the nearest line above the chosen one (through the same vanishing
+// point) whose band with it is floor becomes the chosen line, and again from there (a stripe
+// beside a runner); the nearest, because the band up to a baseboard's top is floor too.
+void ApplyFloorRule(const Eigen::Vector2d& vp, const FloorBandTest& test,
+                    std::vector<JunctionCandidate>* candidates, int* chosen, int* inner_index) {
+  const std::vector<JunctionCandidate>& side = *candidates;
+  const int first = *chosen;
+  for (int step = 0; step < kMaxFloorSteps; ++step) {
+    const MergedLine& inner = side[*chosen].line;
+    const Eigen::Vector2d low = inner.start.y() > inner.end.y() ? inner.start : inner.end;
+    int best = -1;
+    long best_pixels = 0;
+    for (size_t k = 0; k < side.size(); ++k) {
+      const MergedLine& outer = side[k].line;
+      if (static_cast<int>(k) == *chosen || !PassesThrough(outer, vp)) continue;
+      if (!(outer.line.dot(low.homogeneous()) > 0)) continue;  // Not above the chosen line.
+      const BandEdges band = test.measure(inner, outer, vp);
+      if (IsFloorBand(band, test) && (best < 0 || band.pixels < best_pixels)) {
+        best = static_cast<int>(k);
+        best_pixels = band.pixels;
+      }
+    }
+    if (best < 0) break;
+    *chosen = best;
+  }
+  if (*chosen == first) return;
+  *inner_index = first;
+  if (test.boundary) {
+    double& boundary = (*candidates)[*chosen].boundary;
+    boundary = std::max(boundary, test.boundary(side[*chosen].line));
+  }
+}
+
 }  // namespace
 
-SelectedPair SelectJunctionPair(const std::vector<JunctionCandidate>& left,
-                                const std::vector<JunctionCandidate>& right,
+SelectedPair SelectJunctionPair(std::vector<JunctionCandidate>* left_candidates,
+                                std::vector<JunctionCandidate>* right_candidates,
                                 const std::vector<MergedLine>& all_lines,
                                 const Eigen::Vector2d& size,
-                                const BaseboardBandTest& band) {
+                                const BaseboardBandTest& band,
+                                const FloorBandTest& floor_band) {
+  const std::vector<JunctionCandidate>& left = *left_candidates;
+  const std::vector<JunctionCandidate>& right = *right_candidates;
   SelectedPair best;
   const double width = size.x(), height = size.y(), diagonal = size.norm();
   for (size_t i = 0; i < left.size(); ++i) {
@@ -162,6 +207,11 @@ SelectedPair SelectJunctionPair(const std::vector<JunctionCandidate>& left,
         best.score = score;
       }
     }
+  }
+  if (best.left >= 0 && floor_band.measure) {
+    ApplyFloorRule(best.vanishing_point, floor_band, left_candidates, &best.left, &best.left_inner);
+    ApplyFloorRule(best.vanishing_point, floor_band, right_candidates, &best.right,
+                   &best.right_inner);
   }
   if (best.left >= 0) {
     ApplyBaseboardRule(left, best.vanishing_point, true, band, &best.left, &best.left_lower);

@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 
+#include "perception/floor_band.h"
 #include "perception/line_segments.h"
 
 namespace corridor {
@@ -25,6 +26,8 @@ struct SelectedPair {
   // that the baseboard rule did not take: the junction if the chosen line is a baseboard top, or
   // a recess's floor line, after all. -1 when there is none. Another cue (the ceiling) decides.
   int left_lower = -1, right_lower = -1;
+  // Per side, the line the pair chose when the floor rule replaced it by one above; -1 otherwise.
+  int left_inner = -1, right_inner = -1;
 };
 
 // The baseboard rule's second test: the band between a side's chosen line and a lower partner.
@@ -36,17 +39,38 @@ struct BaseboardBandTest {
   double min_boundary_ratio = 0.3;  // Partners with less of the chosen line's boundary score are not tried.
 };
 
+// The floor rule: the band between a side's chosen line and a line above it (on the wall side,
+// through the same vanishing point) is floor, not wall, when its edges run across the corridor
+// (tile joints reach the wall) and none stand vertical (a wall's door frames and corners do): the
+// chosen line is then a runner's or a stripe's edge inside the floor, and the line above bounds it.
+struct FloorBandTest {
+  // The band's edges (MeasureBandEdges); empty: no floor rule.
+  std::function<BandEdges(const MergedLine& inner, const MergedLine& outer,
+                          const Eigen::Vector2d& vanishing_point)>
+      measure;
+  // The outer line's boundary score (BoundaryScore) against the floor just below it: it stands in
+  // for the score against the reference patch, which may show the runner, not this floor, when
+  // it is higher.
+  std::function<double(const MergedLine& outer)> boundary;
+  long min_across = 20;             // At least this many edge pixels across the corridor...
+  int min_across_rows = 4;          // ... on at least this many rows (joints recur down a floor)...
+  double max_vertical_ratio = 0.1;  // ... and at most this many vertical ones per across one.
+};
+
 // Scores every (left, right) pair: both lines' support lengths and boundary scores, plus the
 // agreement of the other lines with the pair's vanishing point. A pair must meet above both
 // supports, with the left support left of the vanishing point and the right support right of it.
 // `all_lines` are every merged line (for the vanishing-point vote); `size` is (width, height).
 // Then, per side, the baseboard rule: a lower partner of the chosen line becomes the junction when
 // its boundary score nearly matches the chosen line's, or when `band` finds the band between them
-// unlike the floor (a baseboard whose lower edge has little contrast with the floor).
-SelectedPair SelectJunctionPair(const std::vector<JunctionCandidate>& left,
-                                const std::vector<JunctionCandidate>& right,
+// unlike the floor (a baseboard whose lower edge has little contrast with the floor). Before it,
+// the floor rule (`floor_band`): the farthest line above the chosen one whose band is floor
+// becomes the chosen line, its boundary score the higher of the two (`floor_band.boundary`).
+SelectedPair SelectJunctionPair(std::vector<JunctionCandidate>* left,
+                                std::vector<JunctionCandidate>* right,
                                 const std::vector<MergedLine>& all_lines,
                                 const Eigen::Vector2d& size,
-                                const BaseboardBandTest& band = BaseboardBandTest());
+                                const BaseboardBandTest& band = BaseboardBandTest(),
+                                const FloorBandTest& floor_band = FloorBandTest());
 
 }  // namespace corridor

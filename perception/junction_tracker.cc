@@ -308,7 +308,7 @@ bool TrackJunctions(const cv::Mat& bgr, const JunctionPair& previous,
       return BandContrast(roi, floor, upper, lower, roi_top, scale);
     };
   }
-  const SelectedPair pair = SelectJunctionPair(judged[0], judged[1], all_lines,
+  const SelectedPair pair = SelectJunctionPair(&judged[0], &judged[1], all_lines,
                                                Eigen::Vector2d(bgr.cols, height), band);
   if (pair.left < 0) {
     return fail(

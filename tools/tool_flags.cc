@@ -83,6 +83,10 @@ DEFINE_double(max_floor_texture, 0.015,
               "(horizontal, vertical, toward the vanishing point) than this fraction is not a "
               "corridor floor (outdoor scenes, still lifes): no corridor found. Raise it for "
               "patterned floors; 0 = no check");
+DEFINE_int32(floor_band_min_across, 20,
+             "A chosen junction with a line above it, where the floor between them shows at least "
+             "this many edge pixels across the corridor (tile joints) and few vertical ones, is a "
+             "runner's or stripe's edge: the line above is the junction; 0 = off");
 
 namespace corridor {
 
@@ -107,6 +111,7 @@ Status RecoverDepthOptionsFromFlags(RecoverDepthOptions* options) {
   options->perception.baseboard_band_contrast = FLAGS_baseboard_band_contrast;
   options->perception.roi_top_fraction = FLAGS_roi_top;
   options->perception.max_floor_texture = FLAGS_max_floor_texture;
+  options->perception.floor_band_min_across = FLAGS_floor_band_min_across;
   options->perception.hough_angle_window_deg = FLAGS_hough_angle_window;
   options->perception.relaxed_hough_threshold = FLAGS_relaxed_hough_threshold;
   options->min_confidence = FLAGS_min_confidence;

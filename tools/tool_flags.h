@@ -33,6 +33,7 @@ DECLARE_int32(junction_max_width);
 DECLARE_double(baseboard_band_contrast);
 DECLARE_double(roi_top);
 DECLARE_double(max_floor_texture);
+DECLARE_int32(floor_band_min_across);
 DECLARE_double(hough_angle_window);
 DECLARE_int32(relaxed_hough_threshold);
 DECLARE_string(sequence);

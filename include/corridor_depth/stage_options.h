@@ -30,6 +30,7 @@ struct JunctionDetectorOptions {
   double min_inclination_deg = 8;                   // Scene prior: flattest junction, degrees from horizontal (cross-corridor edges are flatter).
   double max_inclination_deg = 80;                  // Scene prior: steepest junction, degrees from horizontal (the paper: 90 - atan(H/W), set -1).
   double baseboard_band_contrast = 1.45;            // A lower line parallel to the chosen one is the junction (the chosen one a baseboard top) when the band between them is this unlike the floor below, in floor spreads (BandContrast); raise it for glossy floors that mirror the baseboard; 0 = off.
+  int floor_band_min_across = 20;                   // The chosen junction is a line inside the floor (a runner's or stripe's edge) and a line above it the junction when the band between them has at least this many edge pixels across the corridor (tile joints), few vertical ones and some near the upper line (FloorBandTest); 0 = off.
   double support_distance_px = 2.0;                 // Edge pixels this close to a chosen line support its refit.
   double max_edge_density = 0.2;                    // More edge pixels than this fraction of the ROI: noise or texture, not a corridor.
   double max_floor_texture = 0.015;                 // More of the floor between the chosen junctions in strong edges along no corridor line than this fraction: not a corridor (an outdoor scene, a still life); 0 = no check.

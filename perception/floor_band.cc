@@ -1,0 +1,72 @@
+#include "perception/floor_band.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "kernels/edge_scan.h"
+
+namespace corridor {
+namespace {
+
+// Narrows [lo, hi) (columns, u = scale * column) to where sign * line . (u, v, 1) > margin.
+void KeepSide(const Eigen::Vector3d& line, double sign, double v, double margin, int scale,
+              double* lo, double* hi) {
+  const double a = sign * line.x(), rest = sign * (line.y() * v + line.z()) - margin;
+  if (a == 0) {
+    if (!(rest > 0)) *hi = *lo;
+    return;
+  }
+  const double bound = -rest / a / scale;
+  if (a > 0) {
+    *lo = std::max(*lo, std::floor(bound) + 1);
+  } else {
+    *hi = std::min(*hi, std::ceil(bound));
+  }
+}
+
+}  // namespace
+
+BandEdges MeasureBandEdges(const cv::Mat& edges, const cv::Mat& dx, const cv::Mat& dy,
+                           const GradientGrid& grid, const Eigen::Vector3d& inner,
+                           const Eigen::Vector3d& outer, const Eigen::Vector2d& vanishing_point,
+                           const BandEdgeOptions& options) {
+  BandEdges out;
+  if (edges.type() != CV_8U || dx.type() != CV_16S || dy.type() != CV_16S ||
+      dx.size() != edges.size() || dy.size() != edges.size()) {
+    return out;
+  }
+  const double tan_tolerance = std::tan(options.tolerance_deg * M_PI / 180.0);
+  const double sin_vp = std::sin(options.vp_tolerance_deg * M_PI / 180.0);
+  const double margin = options.margin;
+  for (int j = 0; j < edges.rows; ++j) {
+    const double v = grid.first_row + static_cast<double>(grid.scale) * j;
+    if (!(v > vanishing_point.y() + margin)) continue;
+    double lo = 0, hi = edges.cols;
+    KeepSide(inner, -1.0, v, margin, grid.scale, &lo, &hi);  // Above the inner line.
+    KeepSide(outer, 1.0, v, margin, grid.scale, &lo, &hi);   // Below the outer line.
+    if (!(lo < hi)) continue;
+    const int begin = static_cast<int>(lo), end = static_cast<int>(hi);
+    out.pixels += end - begin;
+    const short* gx = dx.ptr<short>(j);
+    const short* gy = dy.ptr<short>(j);
+    const long across_before = out.across;
+    ForEachNonZeroByte(edges.ptr<uchar>(j), begin, end, [&](int i) {
+      const double ax = std::abs(gx[i]), ay = std::abs(gy[i]);
+      if (ay <= tan_tolerance * ax) {  // Gradient horizontal: the edge stands vertical.
+        ++out.vertical;
+        return;
+      }
+      if (ax > tan_tolerance * ay) return;  // Neither across nor vertical.
+      const double u = static_cast<double>(grid.scale) * i;
+      // The edge runs along (-gy, gx); the vanishing point lies along (tx, ty).
+      const double tx = vanishing_point.x() - u, ty = vanishing_point.y() - v;
+      const double cross = -gy[i] * ty - gx[i] * tx;
+      if (std::abs(cross) <= sin_vp * std::hypot(ax, ay) * std::hypot(tx, ty)) return;
+      ++out.across;
+    });
+    if (out.across > across_before) ++out.across_rows;
+  }
+  return out;
+}
+
+}  // namespace corridor

@@ -1,0 +1,182 @@
+// The floor rule's measures: MeasureBandEdges on edge pixels placed by hand (which class each
+// falls in is worked out here from its gradient and position), SampleBelowLine on a two-colour
+// image, and the rule on generated corridors with a carpet runner or floor stripes, against the
+// generator's junction lines.
+#include "perception/floor_band.h"
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <opencv2/imgproc.hpp>
+
+#include "perception/appearance.h"
+#include "perception/junction_detector.h"
+#include "synth/corridor_renderer.h"
+#include "synth/real_buildings.h"
+#include "tests/support/corridor_frame.h"
+
+namespace corridor {
+namespace {
+
+// The line through two image points, unit normal pointing down.
+Eigen::Vector3d DownLine(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  Eigen::Vector3d line = a.homogeneous().cross(b.homogeneous());
+  line /= line.head<2>().norm();
+  return line.y() < 0 ? Eigen::Vector3d(-line) : line;
+}
+
+struct EdgeMaps {
+  cv::Mat edges, dx, dy;
+  explicit EdgeMaps(cv::Size size)
+      : edges(cv::Mat::zeros(size, CV_8U)),
+        dx(cv::Mat::zeros(size, CV_16S)),
+        dy(cv::Mat::zeros(size, CV_16S)) {}
+  // An edge pixel at (u, v) with gradient (gx, gy); `on` false: the gradient only (no edge).
+  void Put(int u, int v, double gx, double gy, bool on = true) {
+    edges.at<uchar>(v, u) = on ? 255 : 0;
+    dx.at<short>(v, u) = static_cast<short>(std::lround(gx));
+    dy.at<short>(v, u) = static_cast<short>(std::lround(gy));
+  }
+};
+
+// A left wall's band, the vanishing point at (150, 20): the inner line (a runner's edge) reaches
+// (30, 200), the outer one (the junction) (0, 120). At row 150 the inner line is at u = 63.3 and
+// the outer at u = -45: the band spans the row's first 60 pixels.
+class BandTest : public ::testing::Test {
+ protected:
+  const Eigen::Vector2d vp{150, 20};
+  const Eigen::Vector3d inner = DownLine(vp, {30, 200});
+  const Eigen::Vector3d outer = DownLine(vp, {0, 120});
+  EdgeMaps maps{cv::Size(300, 200)};
+  BandEdges Measure() const {
+    return MeasureBandEdges(maps.edges, maps.dx, maps.dy, GradientGrid(), inner, outer, vp,
+                            BandEdgeOptions());
+  }
+};
+
+TEST_F(BandTest, CountsAcrossAndVerticalEdges) {
+  // Row 150: the band spans u in [0, 60); row 140: [0, 66).
+  maps.Put(50, 150, 0, 200);         // Horizontal edge: across.
+  maps.Put(48, 150, 10, -150);       // 3.8 deg from horizontal: across.
+  maps.Put(5, 150, 0, -200);         // Across.
+  maps.Put(7, 150, 300, 20);         // 3.8 deg from vertical: vertical.
+  maps.Put(50, 140, -200, 0);        // Vertical.
+  maps.Put(40, 140, 0, 200);         // Across, on a second row.
+  maps.Put(30, 150, 150, 150);       // 45 degrees: neither.
+  maps.Put(20, 150, 100, 35);        // 19 deg from vertical: neither.
+  maps.Put(31, 150, 0, 200, false);  // A gradient without an edge pixel.
+  const BandEdges band = Measure();
+  EXPECT_EQ(band.across, 4);
+  EXPECT_EQ(band.across_rows, 2);
+  EXPECT_EQ(band.vertical, 2);
+}
+
+TEST_F(BandTest, IgnoresPixelsOutsideTheBand) {
+  maps.Put(100, 150, 0, 200);  // Below the inner line (on the runner): u = 100 > 63.3.
+  maps.Put(62, 150, 0, 200);   // Within the 3 px margin of the inner line.
+  maps.Put(160, 21, 0, 200);   // Right of the vanishing point, hardly below its row.
+  maps.Put(10, 60, 0, 200);    // Above the outer line (on the wall): its row at u = 10 is 113.
+  ASSERT_GT(20 + (150 - 10) * (100.0 / 150.0), 60.0);
+  const BandEdges band = Measure();
+  EXPECT_EQ(band.across, 0);
+  EXPECT_EQ(band.vertical, 0);
+}
+
+TEST_F(BandTest, AnEdgeTowardTheVanishingPointIsNotAcross) {
+  // Near the outer line far from the vanishing point the band's direction is 33.7 degrees from
+  // horizontal; take a flatter pair of lines, 12 and 20 degrees, where an edge pointing at the
+  // vanishing point is within 15 degrees of horizontal.
+  const Eigen::Vector2d flat_vp(290, 20);
+  const Eigen::Vector3d flat_inner = DownLine(flat_vp, {0, 20 + 290 * std::tan(20 * M_PI / 180)});
+  const Eigen::Vector3d flat_outer = DownLine(flat_vp, {0, 20 + 290 * std::tan(12 * M_PI / 180)});
+  // (40, 20 + 250 tan 16 deg): in the middle of the band; the direction to the vanishing point
+  // is 16 degrees from horizontal; its gradient is normal to it.
+  const double angle = 16 * M_PI / 180;
+  const int v = static_cast<int>(std::lround(20 + 250 * std::tan(angle)));
+  maps.Put(40, v, -200 * std::sin(angle), -200 * std::cos(angle));  // Edge toward the VP.
+  maps.Put(44, v, 0, 200);                                          // A horizontal edge.
+  const BandEdges band = MeasureBandEdges(maps.edges, maps.dx, maps.dy, GradientGrid(),
+                                          flat_inner, flat_outer, flat_vp, BandEdgeOptions());
+  EXPECT_EQ(band.across, 1);
+  EXPECT_EQ(band.vertical, 0);
+}
+
+TEST(SampleBelowLineTest, GivesTheColourBelowTheLine) {
+  // Grey-blue above the line v = 0.5 u + 40, brown below it.
+  cv::Mat bgr(200, 200, CV_8UC3);
+  const cv::Vec3b above(180, 150, 140), below(40, 90, 150);
+  for (int v = 0; v < bgr.rows; ++v) {
+    for (int u = 0; u < bgr.cols; ++u) bgr.at<cv::Vec3b>(v, u) = v > 0.5 * u + 40 ? below : above;
+  }
+  MergedLine line;
+  line.line = DownLine({0, 40}, {200, 140});
+  line.start = {10, 45};
+  line.end = {190, 135};
+  const FloorAppearance floor = SampleBelowLine(bgr, line, 0, 1);
+  cv::Mat lab;
+  cv::cvtColor(cv::Mat(1, 1, CV_8UC3, cv::Scalar(below[0], below[1], below[2])), lab,
+               cv::COLOR_BGR2Lab);
+  const cv::Vec3b expected = lab.at<cv::Vec3b>(0, 0);
+  for (int c = 0; c < 3; ++c) EXPECT_EQ(floor.lab[c], expected[c]) << "channel " << c;
+  EXPECT_EQ(floor.spread, 1.0f);
+}
+
+// Frame `index` of scene `scene` of the real-buildings floor class, as the preset renders it, and
+// the largest distance, px, of either found junction's support ends from the true line (the
+// generator's scene projected by hand); NaN when no pair is found.
+double WorstJunctionOffsetPx(int scene, int index, const JunctionDetectorOptions& options) {
+  synth::RealBuildingsOptions preset_options;
+  preset_options.scenes = scene + 1;
+  preset_options.frames = index + 1;
+  std::vector<synth::ScenePreset> presets;
+  EXPECT_TRUE(synth::RealBuildingsPreset("floor", preset_options, &presets).ok());
+  const synth::ScenePreset& preset = presets.at(scene);
+  synth::Frame frame;
+  EXPECT_TRUE(synth::RenderFrame(preset.scene, preset.camera, preset.poses.at(index), &frame).ok());
+  JunctionPair pair;
+  EXPECT_TRUE(DetectJunctions(frame.bgr, options, &pair).ok());
+  if (!pair.status.ok()) return std::nan("");
+  double worst = 0;
+  for (const int side : {-1, 1}) {
+    const Eigen::Vector3d truth = testing_util::TrueJunction(frame.truth, preset.camera, side);
+    const JunctionLine& found = side < 0 ? pair.left : pair.right;
+    for (const Eigen::Vector2d& end : {found.near_end, found.far_end}) {
+      worst = std::max(worst, std::abs(truth.dot(end.homogeneous())));
+    }
+  }
+  return worst;
+}
+
+// A carpet runner down the middle of a tiled floor (scene 0) and one with a border (scene 4): the
+// reference patch at the bottom centre shows the runner, so its edges look like the floor's
+// boundary and the pair choice takes them. The tile joints between the runner and each wall run
+// across the corridor: the floor rule takes the junctions above.
+TEST(FloorRuleTest, TakesTheJunctionsBeyondACarpetRunner) {
+  JunctionDetectorOptions without;
+  without.floor_band_min_across = 0;
+  for (const auto& [scene, index] : {std::pair{0, 0}, {0, 4}, {4, 1}, {4, 2}}) {
+    const double with_rule = WorstJunctionOffsetPx(scene, index, JunctionDetectorOptions());
+    const double without_rule = WorstJunctionOffsetPx(scene, index, without);
+    std::printf("scene %d frame %d: junctions within %.1f px with the rule, %.1f px without\n",
+                scene, index, with_rule, without_rule);
+    EXPECT_GT(without_rule, 20.0) << scene << "/" << index;  // The premise: a runner edge.
+    EXPECT_LT(with_rule, 3.0) << scene << "/" << index;
+  }
+}
+
+TEST(FloorRuleTest, BadOptionIsRejected) {
+  JunctionDetectorOptions options;
+  options.floor_band_min_across = -1;
+  std::string why;
+  EXPECT_FALSE(options.Check(&why));
+  EXPECT_NE(why.find("floor_band_min_across"), std::string::npos) << why;
+}
+
+}  // namespace
+}  // namespace corridor
