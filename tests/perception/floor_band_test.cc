@@ -17,6 +17,7 @@
 
 #include "perception/appearance.h"
 #include "perception/junction_detector.h"
+#include "tests/support/image_line.h"
 #include "synth/corridor_renderer.h"
 #include "synth/real_buildings.h"
 #include "tests/support/corridor_frame.h"
@@ -24,12 +25,7 @@
 namespace corridor {
 namespace {
 
-// The line through two image points, unit normal pointing down.
-Eigen::Vector3d DownLine(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-  Eigen::Vector3d line = a.homogeneous().cross(b.homogeneous());
-  line /= line.head<2>().norm();
-  return line.y() < 0 ? Eigen::Vector3d(-line) : line;
-}
+using testing_util::DownLine;
 
 struct EdgeMaps {
   cv::Mat edges, dx, dy;

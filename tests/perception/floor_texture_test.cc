@@ -12,17 +12,13 @@
 #include <opencv2/imgproc.hpp>
 
 #include "perception/junction_detector.h"
+#include "tests/support/image_line.h"
 #include "tests/support/outdoor_scene.h"
 
 namespace corridor {
 namespace {
 
-// The line through two image points, normal pointing down (b > 0), unit normal.
-Eigen::Vector3d DownLine(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-  Eigen::Vector3d line = a.homogeneous().cross(b.homogeneous());
-  line /= line.head<2>().norm();
-  return line.y() < 0 ? Eigen::Vector3d(-line) : line;
-}
+using testing_util::DownLine;
 
 // Angle between two directions given in degrees, as undirected lines: in [0, 90].
 double LineAngleDeg(double a, double b) {
