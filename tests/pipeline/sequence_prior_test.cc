@@ -1,0 +1,62 @@
+// The width a sequence carries: the median of the recent measured widths, so that one frame's
+// wrong wide width is not held over the right frames after it, and the recent widths start again
+// when a held width is let go. Widths written out here; the medians worked out by hand.
+#include "pipeline/sequence_prior.h"
+
+#include <gtest/gtest.h>
+
+namespace corridor {
+namespace {
+
+RecoverDepthResult Frame(double width, bool held = false) {
+  RecoverDepthResult r;
+  r.status = Status::Ok();
+  r.has_geometry = true;
+  r.geometry.width = width;
+  r.geometry.camera_height = 0.4;
+  r.width_held = held;
+  return r;
+}
+
+TEST(SequencePriorTest, OneWideFrameDoesNotBecomeTheWidth) {
+  SequencePrior prior;
+  EXPECT_EQ(prior.Previous(), nullptr);
+  prior.Update(Frame(3.10));
+  ASSERT_NE(prior.Previous(), nullptr);
+  EXPECT_DOUBLE_EQ(prior.Previous()->width, 3.10);
+  prior.Update(Frame(3.08));
+  EXPECT_DOUBLE_EQ(prior.Previous()->width, 3.08);  // {3.08, 3.10}: the lower middle.
+  prior.Update(Frame(3.11));
+  EXPECT_DOUBLE_EQ(prior.Previous()->width, 3.10);
+  prior.Update(Frame(3.74));  // A line beyond the wall: {3.08, 3.10, 3.11, 3.74}.
+  EXPECT_DOUBLE_EQ(prior.Previous()->width, 3.10);
+  prior.Update(Frame(3.75));  // {3.08, 3.10, 3.11, 3.74, 3.75}.
+  EXPECT_DOUBLE_EQ(prior.Previous()->width, 3.11);
+  prior.Update(Frame(3.09));  // 3.10 drops out: {3.08, 3.09, 3.11, 3.74, 3.75}.
+  EXPECT_DOUBLE_EQ(prior.Previous()->width, 3.11);
+}
+
+TEST(SequencePriorTest, HeldWidthsAreNotRecentWidths) {
+  SequencePrior prior;
+  prior.Update(Frame(2.0));
+  prior.Update(Frame(2.0, /*held=*/true));  // Held at 2.0: the 1.6 measured is not recorded.
+  EXPECT_DOUBLE_EQ(prior.Previous()->width, 2.0);
+  prior.Update(Frame(2.2));
+  EXPECT_DOUBLE_EQ(prior.Previous()->width, 2.0);  // {2.0, 2.2}: the lower middle.
+}
+
+TEST(SequencePriorTest, ALetGoWidthStartsTheRecentWidthsAgain) {
+  SequencePrior prior;
+  for (int i = 0; i < 3; ++i) prior.Update(Frame(3.0));
+  for (int i = 0; i < SequencePrior::kMaxHeld; ++i) {
+    ASSERT_NE(prior.Previous(), nullptr);
+    prior.Update(Frame(3.0, /*held=*/true));  // The corridor narrowed; the width was held.
+  }
+  EXPECT_EQ(prior.Previous(), nullptr);  // Let go for one frame.
+  prior.Update(Frame(2.0));
+  ASSERT_NE(prior.Previous(), nullptr);
+  EXPECT_DOUBLE_EQ(prior.Previous()->width, 2.0);  // Not the median with the 3.0s.
+}
+
+}  // namespace
+}  // namespace corridor
