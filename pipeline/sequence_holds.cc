@@ -21,9 +21,9 @@ void HoldWidth(const CorridorGeometry& previous, double max_change, CorridorGeom
   if (!(other > 0.05)) return;  // The kept wall is beyond the previous width: nothing to hold.
   std::ostringstream how;
   how.precision(2);
-  how << std::fixed << "width " << g->width << " m is much narrower than the previous frame's "
+  how << std::fixed << "width " << g->width << " m is much narrower than the recent frames' "
       << previous.width << " m: the " << (keep_left ? "left" : "right")
-      << " wall kept, the previous width held";
+      << " wall kept, the recent width held";
   g->offset = keep_left ? kept - 0.5 * previous.width : 0.5 * previous.width - kept;
   g->width = previous.width;
   result->width_held = true;

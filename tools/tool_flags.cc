@@ -26,9 +26,9 @@ DEFINE_double(width_prior, 0.0,
               "Corridor width for frames where one junction is hidden, m (0 = none; in a sequence "
               "the previous frame's width is used)");
 DEFINE_double(max_width_change, 0.15,
-              "In a sequence, a width this much (relative) narrower than the previous frame's means "
-              "one junction is wrong: the previous width is held, for up to 3 frames in a row "
-              "(0 = off)");
+              "In a sequence, a width this much (relative) narrower than the recent frames' (the "
+              "median of the last 5 measured) means one junction is wrong: that width is held, for "
+              "up to 3 frames in a row (0 = off)");
 DEFINE_double(max_ceiling_disagreement, 0.10,
               "In a sequence, a frame whose ceiling was not found, or whose two sides' heights "
               "above the camera differ by more than this (|log ratio|), takes the previous "

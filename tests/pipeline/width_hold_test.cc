@@ -71,7 +71,7 @@ TEST(WidthHoldTest, ANarrowWidthAfterAWideOneIsHeldAndFollowsTheTruth) {
 
   const RecoverDepthResult held = RecoverWith(h, HoldOptions(), &h.previous);
   EXPECT_TRUE(held.width_held);
-  EXPECT_NE(held.fallback.find("previous width held"), std::string::npos) << held.fallback;
+  EXPECT_NE(held.fallback.find("recent width held"), std::string::npos) << held.fallback;
   EXPECT_DOUBLE_EQ(held.geometry.width, h.previous.width);
   // Both walls within 3% of the generator's (the left junction is the visible one).
   EXPECT_NEAR(held.geometry.LeftDistance(), truth.LeftDistance(), 0.03 * truth.LeftDistance());
