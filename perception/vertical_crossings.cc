@@ -29,6 +29,14 @@ inline void SumSobel(const cv::Mat& bgr, int u, int v, int* gx, int* gy) {
   *gy = (s(r2) + 2 * s(r2 + 3) + s(r2 + 6)) - (s(r0) + 2 * s(r0 + 3) + s(r0 + 6));
 }
 
+// std::lround(x) for |x| < 2^31, inlined: truncation, then the exact remainder decides (x less
+// its truncation is exact in double), half away from zero as lround rounds.
+inline int RoundHalfAway(double x) {
+  const int i = static_cast<int>(x);
+  const double rest = x - static_cast<double>(i);
+  return i + (rest >= 0.5) - (rest <= -0.5);
+}
+
 // The band from the point along `direction` (from 2 px on, its length): the fraction of it on an
 // edge running along `up` (within 1 px across, its gradient across `up` at least `threshold` and
 // twice its gradient along `up`), and its mean contrast across `up` (the largest within 1 px).
@@ -46,8 +54,8 @@ Run BandRun(const cv::Mat& bgr, const BandPoint& p, const Eigen::Vector2d& direc
     double best = 0;
     bool edge = false;
     for (int d = -1; d <= 1; ++d) {
-      const int u = static_cast<int>(std::lround(q.x() + d * across.x()));
-      const int v = static_cast<int>(std::lround(q.y() + d * across.y()));
+      const int u = RoundHalfAway(q.x() + d * across.x());
+      const int v = RoundHalfAway(q.y() + d * across.y());
       if (u < 1 || v < 1 || u >= bgr.cols - 1 || v >= bgr.rows - 1) continue;
       int gx = 0, gy = 0;
       SumSobel(bgr, u, v, &gx, &gy);
