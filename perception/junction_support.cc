@@ -27,18 +27,29 @@ void KeepWhere(const std::vector<Eigen::Vector2d>& from, Keep keep,
   to->resize(kept);
 }
 
+// RefineJunction's working memory.
+struct RefineScratch {
+  std::vector<Eigen::Vector2d> side, fitted;
+  std::vector<int> bins;
+};
+
 }  // namespace
 
 std::vector<Eigen::Vector2d> FloorSidePixels(const std::vector<Eigen::Vector2d>& edges,
                                              const Eigen::Vector2d& vp, bool left) {
   std::vector<Eigen::Vector2d> side;
+  FloorSidePixels(edges, vp, left, &side);
+  return side;
+}
+
+void FloorSidePixels(const std::vector<Eigen::Vector2d>& edges, const Eigen::Vector2d& vp,
+                     bool left, std::vector<Eigen::Vector2d>* side) {
   KeepWhere(
       edges, [&](const Eigen::Vector2d& p) {
         const bool beyond = left ? p.x() > vp.x() : p.x() < vp.x();
         return !beyond & !(p.y() < vp.y());
       },
-      &side);
-  return side;
+      side);
 }
 
 void SupportPixels(const std::vector<Eigen::Vector2d>& side, const Eigen::Vector3d& line,
@@ -55,8 +66,15 @@ JunctionLine RefineJunction(const JunctionCandidate& candidate,
                             bool left, double distance, double image_height) {
   JunctionLine out;
   Eigen::Vector3d line = candidate.line.line;
-  const std::vector<Eigen::Vector2d> side = FloorSidePixels(edges, vp, left);
-  std::vector<Eigen::Vector2d> support, fitted;  // `fitted`: the pixels `line` was fitted to.
+  // The side's pixels, the last fit's and the support's positions along the line in the thread's
+  // scratch, which keeps its memory from call to call; `support` becomes the result's.
+  thread_local RefineScratch thread_scratch;
+  RefineScratch& scratch = thread_scratch;
+  std::vector<Eigen::Vector2d>& side = scratch.side;
+  FloorSidePixels(edges, vp, left, &side);
+  std::vector<Eigen::Vector2d> support;
+  std::vector<Eigen::Vector2d>& fitted = scratch.fitted;  // The pixels `line` was fitted to.
+  fitted.clear();
   bool final_support = false;                    // True once `support` is the final (distance, line) support.
   for (int round = 0; round < 3; ++round) {
     SupportPixels(side, line, round == 0 ? 2 * distance : distance, &support);
@@ -79,7 +97,8 @@ JunctionLine RefineJunction(const JunctionCandidate& candidate,
     support = {candidate.line.start, candidate.line.end};
   }
   double lo = 1e300, hi = -1e300;
-  std::vector<int> bins;
+  std::vector<int>& bins = scratch.bins;
+  bins.clear();
   for (const auto& p : support) {
     const double t = (p - origin).dot(direction);
     lo = std::min(lo, t);
