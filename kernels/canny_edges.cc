@@ -206,6 +206,13 @@ __attribute__((target("avx2"))) void SuppressRowAvx2(const RowView& r, int cols,
 }
 #endif
 
+// CannyFromGradients' working memory.
+struct CannyScratch {
+  std::vector<uint32_t> ring;
+  std::vector<uint8_t> candidates, map;
+  std::vector<int> stack;
+};
+
 }  // namespace
 
 Status CannyFromGradients(const cv::Mat& dx, const cv::Mat& dy, double low, double high, bool l2,
@@ -230,16 +237,23 @@ Status CannyFromGradients(const cv::Mat& dx, const cv::Mat& dy, double low, doub
   // Three rows of magnitudes, each with a zero before and eight after (the last pixel's
   // neighbours in a register); a row outside the image is zero. Beside them, the centre and next
   // rows' candidates (magnitude above `low`).
+  // The buffers are the thread's, reused from call to call (each filled here as if new).
+  thread_local CannyScratch thread_scratch;
+  CannyScratch& scratch = thread_scratch;
   const int ring_step = cols + 9;
-  std::vector<uint32_t> ring(3 * static_cast<size_t>(ring_step), 0);
+  std::vector<uint32_t>& ring = scratch.ring;
+  ring.assign(3 * static_cast<size_t>(ring_step), 0);
   uint32_t* row_mag[3] = {ring.data() + 1, ring.data() + ring_step + 1,
                           ring.data() + 2 * ring_step + 1};
-  std::vector<uint8_t> candidates(2 * static_cast<size_t>(cols), 0);
+  std::vector<uint8_t>& candidates = scratch.candidates;
+  candidates.assign(2 * static_cast<size_t>(cols), 0);
   uint8_t* row_candidate[2] = {candidates.data(), candidates.data() + cols};
   const uint32_t least = static_cast<uint32_t>(low_m + 1);
   // The map has a border of kNever around the image, so that hysteresis stops there.
-  std::vector<uint8_t> map(static_cast<size_t>(rows + 2) * step, kNever);
-  std::vector<int> stack;
+  std::vector<uint8_t>& map = scratch.map;
+  map.assign(static_cast<size_t>(rows + 2) * step, kNever);
+  std::vector<int>& stack = scratch.stack;
+  stack.clear();
   stack.reserve(1024);
 
   magnitude(dx.ptr<int16_t>(0), dy.ptr<int16_t>(0), cols, least, row_mag[1], row_candidate[0]);
