@@ -145,6 +145,12 @@ void ColorGradientOpenCv(const cv::Mat& image, cv::Mat* dx, cv::Mat* dy) {
   }
 }
 
+// ColorGradient's working memory: planar rows and Sobel scratch rows.
+struct GradientScratch {
+  std::vector<uchar> plane_rows;
+  std::vector<short> rows;
+};
+
 }  // namespace
 
 void ColorGradient(const cv::Mat& image, cv::Mat* dx, cv::Mat* dy, std::vector<int>* histogram) {
@@ -167,7 +173,11 @@ void ColorGradient(const cv::Mat& image, cv::Mat* dx, cv::Mat* dy, std::vector<i
   // below the current one (Reflect101 at the borders) are always in distinct slots, so nothing is
   // split twice and the planes stay in the cache (cv::split of the whole image first is slower:
   // docs/results.md, "Image kernels").
-  std::vector<uchar> plane_rows(static_cast<size_t>(3) * n * cols);
+  // Its buffers are the thread's, reused from call to call.
+  thread_local GradientScratch thread_scratch;
+  GradientScratch& work = thread_scratch;
+  std::vector<uchar>& plane_rows = work.plane_rows;
+  plane_rows.assign(static_cast<size_t>(3) * n * cols, 0);
   uchar* planes[3][4];
   int slot_row[3] = {-1, -1, -1};
   for (int k = 0; k < 3; ++k) {
@@ -188,7 +198,8 @@ void ColorGradient(const cv::Mat& image, cv::Mat* dx, cv::Mat* dy, std::vector<i
   dy->create(rows, cols, CV_16S);
   if (histogram != nullptr) histogram->assign(kGradientBins, 0);
   // Scratch rows: s, t (cols + 2 each) and the best |dx| + |dy| so far.
-  std::vector<short> scratch(2 * (cols + 2) + cols);
+  std::vector<short>& scratch = work.rows;
+  scratch.assign(2 * (cols + 2) + cols, 0);
   short* s = scratch.data();
   short* t = s + cols + 2;
   short* best = t + cols + 2;
