@@ -174,16 +174,24 @@ OrientedEdges ComputeOrientedEdges(const cv::Mat& bgr, int top, int bottom, Imag
 
 LineHits OrientedLineHits(const cv::Point* line, int samples, const OrientedEdges& edges) {
   LineHits out;
-  const int rows = edges.near.rows;
-  const auto inside = [&](const cv::Point& p) {
-    return p.x >= 0 && p.x < edges.near.cols && p.y >= edges.top && p.y < edges.top + rows;
-  };
+  const int rows = edges.near.rows, cols = edges.near.cols;
+  // One pass over the samples: the visible ones' neighbourhood bits, in order (the orientation
+  // mask needs the visible ends first); then the hits among them.
+  constexpr int kOnStack = 256;
+  uchar stack_bits[kOnStack];
+  std::vector<uchar> heap_bits;
+  uchar* bits = stack_bits;
+  if (samples > kOnStack) {
+    heap_bits.resize(samples);
+    bits = heap_bits.data();
+  }
   int first = -1, last = -1, visible = 0;
   for (int i = 0; i < samples; ++i) {
-    if (!inside(line[i])) continue;
+    const int x = line[i].x, r = line[i].y - edges.top;
+    if (!(x >= 0 && x < cols && r >= 0 && r < rows)) continue;
     if (first < 0) first = i;
     last = i;
-    ++visible;
+    bits[visible++] = edges.near.ptr<uchar>(r)[x];
   }
   out.visible = visible;
   if (visible < 8) return out;
@@ -195,10 +203,7 @@ LineHits OrientedLineHits(const cv::Point* line, int samples, const OrientedEdge
     mask |= static_cast<uchar>(1u << ((bin + k + kOrientationBins) % kOrientationBins));
   }
   int hits = 0;
-  for (int i = first; i <= last; ++i) {
-    if (!inside(line[i])) continue;
-    hits += (edges.near.ptr<uchar>(line[i].y - edges.top)[line[i].x] & mask) != 0;
-  }
+  for (int i = 0; i < visible; ++i) hits += (bits[i] & mask) != 0;
   out.hits = hits;
   return out;
 }
