@@ -81,13 +81,15 @@ __attribute__((target("avx2"))) int ProjectRowAvx2(const Camera& camera,
     ok = _mm_and_si128(ok, _mm_cmpgt_epi32(max_v, vi));
     least = _mm_min_epi32(least, _mm_blendv_epi8(none_high, vi, ok));
     most = _mm_max_epi32(most, _mm_blendv_epi8(none_low, vi, ok));
-    alignas(16) int pu[4], pv[4], keep[4];
-    _mm_store_si128(reinterpret_cast<__m128i*>(pu), ui);
-    _mm_store_si128(reinterpret_cast<__m128i*>(pv), vi);
-    _mm_store_si128(reinterpret_cast<__m128i*>(keep), ok);
-    for (int k = 0; k < 4; ++k) {
-      out[i + k] = keep[k] != 0 ? cv::Point(pu[k], pv[k]) : cv::Point(-1, -1);
-    }
+    // (u, v) pairs of the four points, (-1, -1) where not visible: cv::Point is two ints.
+    static_assert(sizeof(cv::Point) == 2 * sizeof(int), "cv::Point is (x, y) ints");
+    const __m128i not_seen = _mm_set1_epi32(-1);
+    const __m128i pairs_lo = _mm_unpacklo_epi32(ui, vi), pairs_hi = _mm_unpackhi_epi32(ui, vi);
+    const __m128i ok_lo = _mm_unpacklo_epi32(ok, ok), ok_hi = _mm_unpackhi_epi32(ok, ok);
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(out + i),
+                     _mm_blendv_epi8(not_seen, pairs_lo, ok_lo));
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(out + i + 2),
+                     _mm_blendv_epi8(not_seen, pairs_hi, ok_hi));
   }
   alignas(16) int rows[2][4];
   _mm_store_si128(reinterpret_cast<__m128i*>(rows[0]), least);
