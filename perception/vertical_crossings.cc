@@ -39,12 +39,14 @@ inline void SumSobel(const cv::Mat& bgr, int u, int v, int* gx, int* gy) {
 // weights of their pixel (gx: -1 0 1 down the rows 1, 2, 1; gy: 1 2 1 on the row below less the
 // row above), summed in 16 then 32 bits: the same integers. Reads 16 bytes from each row's first
 // pixel, so only where that stays inside the image's data (else the scalar one).
-__attribute__((target("avx2"))) inline void SumSobelAvx2(
-    const cv::Mat& bgr, int u, int v, int* gx, int* gy) {
-  const uchar* r0 = bgr.ptr<uchar>(v - 1) + 3 * (u - 1);
-  const uchar* r1 = bgr.ptr<uchar>(v) + 3 * (u - 1);
-  const uchar* r2 = bgr.ptr<uchar>(v + 1) + 3 * (u - 1);
-  if (r2 + 16 > bgr.dataend) return SumSobel(bgr, u, v, gx, gy);
+// `data`, `step` and `end` are bgr's first pixel, row step and data end, read once by the caller.
+__attribute__((target("avx2"))) inline void SumSobelAvx2(const cv::Mat& bgr, const uchar* data,
+                                                         size_t step, const uchar* end, int u,
+                                                         int v, int* gx, int* gy) {
+  const uchar* r1 = data + step * static_cast<size_t>(v) + 3 * (u - 1);
+  const uchar* r0 = r1 - step;
+  const uchar* r2 = r1 + step;
+  if (r2 + 16 > end) return SumSobel(bgr, u, v, gx, gy);
   const __m128i wx = _mm_setr_epi8(-1, -1, -1, 0, 0, 0, 1, 1, 1, 0, 0, 0, 0, 0, 0, 0);
   const __m128i wx2 = _mm_setr_epi8(-2, -2, -2, 0, 0, 0, 2, 2, 2, 0, 0, 0, 0, 0, 0, 0);
   const __m128i wy = _mm_setr_epi8(1, 1, 1, 2, 2, 2, 1, 1, 1, 0, 0, 0, 0, 0, 0, 0);
@@ -77,9 +79,8 @@ struct Run {
   double fraction = 0;
   double contrast = 0;
 };
-template <bool kAvx2>
-CORRIDOR_ALWAYS_INLINE inline Run BandRunBody(const cv::Mat& bgr, const BandPoint& p,
-                                              const Eigen::Vector2d& direction, double threshold) {
+Run BandRunBaseline(const cv::Mat& bgr, const BandPoint& p, const Eigen::Vector2d& direction,
+                    double threshold) {
   const Eigen::Vector2d across(-p.up.y(), p.up.x());
   int on = 0, n = 0;
   double contrast = 0;
@@ -92,15 +93,7 @@ CORRIDOR_ALWAYS_INLINE inline Run BandRunBody(const cv::Mat& bgr, const BandPoin
       const int v = RoundHalfAway(q.y() + d * across.y());
       if (u < 1 || v < 1 || u >= bgr.cols - 1 || v >= bgr.rows - 1) continue;
       int gx = 0, gy = 0;
-#ifdef CORRIDOR_AVX2_VARIANTS
-      if constexpr (kAvx2) {
-        SumSobelAvx2(bgr, u, v, &gx, &gy);
-      } else {
-        SumSobel(bgr, u, v, &gx, &gy);
-      }
-#else
       SumSobel(bgr, u, v, &gx, &gy);
-#endif
       const double g_across = std::abs(gx * across.x() + gy * across.y());
       const double g_up = std::abs(gx * p.up.x() + gy * p.up.y());
       best = std::max(best, g_across);
@@ -114,18 +107,71 @@ CORRIDOR_ALWAYS_INLINE inline Run BandRunBody(const cv::Mat& bgr, const BandPoin
   return run;
 }
 
-Run BandRunBaseline(const cv::Mat& bgr, const BandPoint& p, const Eigen::Vector2d& direction,
-                    double threshold) {
-  return BandRunBody<false>(bgr, p, direction, threshold);
+#ifdef CORRIDOR_AVX2_VARIANTS
+// RoundHalfAway of four doubles: truncation, the exact remainder, then the whole step.
+__attribute__((target("avx2"))) inline __m128i RoundHalfAwayAvx2(__m256d x) {
+  const __m256d t = _mm256_round_pd(x, _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC);
+  const __m256d rest = _mm256_sub_pd(x, t);
+  const __m256d one = _mm256_set1_pd(1.0);
+  const __m256d up = _mm256_and_pd(_mm256_cmp_pd(rest, _mm256_set1_pd(0.5), _CMP_GE_OQ), one);
+  const __m256d down =
+      _mm256_and_pd(_mm256_cmp_pd(rest, _mm256_set1_pd(-0.5), _CMP_LE_OQ), one);
+  return _mm256_cvttpd_epi32(_mm256_sub_pd(_mm256_add_pd(t, up), down));
 }
 
-#ifdef CORRIDOR_AVX2_VARIANTS
-// The same band with SumSobelAvx2 (the same integers; the double arithmetic is the baseline's:
-// no FMA contraction, as cpu_features.h asks of the variants).
+// The same band with the three points across (d = -1, 0, 1) in the lanes of AVX2 registers:
+// the same products and sums (no FMA), RoundHalfAway's rounding (truncation, then the exact
+// remainder), SumSobelAvx2's integers. A point outside the image counts as a zero gradient,
+// which changes neither the largest contrast (>= 0) nor the edge test (threshold > 0).
 __attribute__((target("avx2"))) Run BandRunAvx2(const cv::Mat& bgr, const BandPoint& p,
                                                 const Eigen::Vector2d& direction,
                                                 double threshold) {
-  return BandRunBody<true>(bgr, p, direction, threshold);
+  const Eigen::Vector2d across(-p.up.y(), p.up.x());
+  const __m256d steps = _mm256_setr_pd(-1.0, 0.0, 1.0, 0.0);
+  const __m256d step_x = _mm256_mul_pd(steps, _mm256_set1_pd(across.x()));
+  const __m256d step_y = _mm256_mul_pd(steps, _mm256_set1_pd(across.y()));
+  const __m256d ax = _mm256_set1_pd(across.x()), ay = _mm256_set1_pd(across.y());
+  const __m256d ux = _mm256_set1_pd(p.up.x()), uy = _mm256_set1_pd(p.up.y());
+  const __m256d two = _mm256_set1_pd(2.0);
+  const __m256d sign = _mm256_set1_pd(-0.0), limit = _mm256_set1_pd(threshold);
+  const int max_u = bgr.cols - 2, max_v = bgr.rows - 2;
+  const uchar* data = bgr.data;
+  const uchar* end = bgr.dataend;
+  const size_t step = bgr.step[0];
+  int on = 0, n = 0;
+  double contrast = 0;
+  for (double k = 2; k <= p.length; k += 1, ++n) {
+    const Eigen::Vector2d q = p.pixel + k * direction;
+    alignas(16) int us[4], vs[4];
+    _mm_store_si128(reinterpret_cast<__m128i*>(us),
+                    RoundHalfAwayAvx2(_mm256_add_pd(_mm256_set1_pd(q.x()), step_x)));
+    _mm_store_si128(reinterpret_cast<__m128i*>(vs),
+                    RoundHalfAwayAvx2(_mm256_add_pd(_mm256_set1_pd(q.y()), step_y)));
+    alignas(32) double gxs[4] = {0, 0, 0, 0}, gys[4] = {0, 0, 0, 0};
+    for (int d = 0; d < 3; ++d) {
+      const int u = us[d], v = vs[d];
+      if (u < 1 || v < 1 || u > max_u || v > max_v) continue;
+      int gx = 0, gy = 0;
+      SumSobelAvx2(bgr, data, step, end, u, v, &gx, &gy);
+      gxs[d] = gx;
+      gys[d] = gy;
+    }
+    const __m256d gx = _mm256_load_pd(gxs), gy = _mm256_load_pd(gys);
+    const __m256d g_across = _mm256_andnot_pd(
+        sign, _mm256_add_pd(_mm256_mul_pd(gx, ax), _mm256_mul_pd(gy, ay)));
+    const __m256d g_up = _mm256_andnot_pd(
+        sign, _mm256_add_pd(_mm256_mul_pd(gx, ux), _mm256_mul_pd(gy, uy)));
+    const __m256d is_edge = _mm256_and_pd(_mm256_cmp_pd(g_across, limit, _CMP_GE_OQ),
+                                          _mm256_cmp_pd(g_across, _mm256_mul_pd(two, g_up),
+                                                        _CMP_GE_OQ));
+    on += _mm256_movemask_pd(is_edge) != 0;
+    alignas(32) double g[4];
+    _mm256_store_pd(g, g_across);
+    contrast += std::max(std::max(g[0], g[1]), g[2]);
+  }
+  Run run;
+  if (n > 0) run.fraction = static_cast<double>(on) / n, run.contrast = contrast / n;
+  return run;
 }
 #endif
 
