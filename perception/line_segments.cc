@@ -66,7 +66,12 @@ EdgeSegments DetectSegments(const cv::Mat& image, int roi_top, const SegmentOpti
   cv::Mat dx, dy;
   std::vector<int> histogram;
   const bool automatic = !(options.canny_high > 0);
-  ColorGradient(smooth, &dx, &dy, automatic ? &histogram : nullptr);
+  // The threshold is at least auto_min: the gradients below it need only be counted together.
+  const int histogram_floor =
+      automatic && options.auto_min > 0 && options.auto_min <= kGradientBins
+          ? static_cast<int>(std::ceil(options.auto_min))
+          : 0;
+  ColorGradient(smooth, &dx, &dy, automatic ? &histogram : nullptr, histogram_floor);
   const double high =
       automatic ? std::max(options.auto_min,
                            HistogramPercentile(histogram, static_cast<double>(dx.total()),
