@@ -29,7 +29,7 @@ void KeepWhere(const std::vector<Eigen::Vector2d>& from, Keep keep,
 
 // RefineJunction's working memory.
 struct RefineScratch {
-  std::vector<Eigen::Vector2d> side, fitted;
+  std::vector<Eigen::Vector2d> side, near, fitted;
   std::vector<int> bins;
 };
 
@@ -76,8 +76,29 @@ JunctionLine RefineJunction(const JunctionCandidate& candidate,
   std::vector<Eigen::Vector2d>& fitted = scratch.fitted;  // The pixels `line` was fitted to.
   fitted.clear();
   bool final_support = false;                    // True once `support` is the final (distance, line) support.
+  // The side's pixels within 2 distance + kSlack of the candidate: a support of a line that moved
+  // less than the rest of that reach over the side's extent (|a' - a| max|u| + |b' - b| max|v| +
+  // |c' - c|, a bound on how far any pixel's distance moved) has no pixel outside them, so it is
+  // found among them alone; else among all.
+  constexpr double kSlack = 8.0;
+  const Eigen::Vector3d first_line = line;
+  const double reach = 2 * distance + kSlack;
+  double max_u = 0, max_v = 0;
+  for (const Eigen::Vector2d& p : side) {
+    max_u = std::max(max_u, std::abs(p.x()));
+    max_v = std::max(max_v, std::abs(p.y()));
+  }
+  std::vector<Eigen::Vector2d>& near = scratch.near;
+  SupportPixels(side, first_line, reach, &near);
+  const auto pixels_for = [&](const Eigen::Vector3d& l,
+                              double d) -> const std::vector<Eigen::Vector2d>& {
+    const Eigen::Vector3d moved = (l - first_line).cwiseAbs();
+    const double bound = moved.x() * max_u + moved.y() * max_v + moved.z();
+    return bound <= reach - d - 1e-6 ? near : side;  // 1e-6 px: more than rounding can move.
+  };
   for (int round = 0; round < 3; ++round) {
-    SupportPixels(side, line, round == 0 ? 2 * distance : distance, &support);
+    const double d = round == 0 ? 2 * distance : distance;
+    SupportPixels(pixels_for(line, d), line, d, &support);
     // The same pixels give the same fit (FitLineLeastDistance is deterministic): the line has
     // converged.
     if (round > 0 && support == fitted) {
@@ -89,7 +110,7 @@ JunctionLine RefineJunction(const JunctionCandidate& candidate,
     line = refit;
     fitted.swap(support);
   }
-  if (!final_support) SupportPixels(side, line, distance, &support);
+  if (!final_support) SupportPixels(pixels_for(line, distance), line, distance, &support);
   out.line = line;
   const Eigen::Vector2d direction(line.y(), -line.x());
   const Eigen::Vector2d origin = -line.z() * line.head<2>();
