@@ -43,6 +43,7 @@ def split_chain(name):
 
 
 def short(name, width=110):
+    name = name.replace("(anonymous namespace)", "{anonymous}")
     name = re.sub(r"\(.*", "(...)", name) if len(name) > width else name
     return name[:width]
 
