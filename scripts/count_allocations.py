@@ -48,16 +48,37 @@ def short(name, width=110):
     return name[:width]
 
 
+def qualified_name(frame):
+    """The function's qualified name without template arguments, parameters or return type
+    (a template's demangled name starts with its return type: "cv::Vec<int, 4>& std::vector<...
+    >::emplace_back<...>(...)" is std::vector's)."""
+    depth, out = 0, []
+    for ch in frame:
+        if ch == "<":
+            depth += 1
+        elif ch == ">":
+            depth = max(0, depth - 1)
+        elif depth == 0:
+            if ch == "(" and out and "".join(out).strip():
+                name = "".join(out).strip()
+                if not name.endswith("anonymous namespace"):
+                    break
+            out.append(ch)
+    return "".join(out).split()[-1] if "".join(out).split() else frame
+
+
 def site_of(chain):
     """(kind, site) of an allocation whose callers are chain (innermost first)."""
     for i, frame in enumerate(chain):
-        if LIBRARY.match(frame):
+        frame_name = qualified_name(frame.replace("(anonymous namespace)", "{anonymous}"))
+        if RUNTIME.match(frame_name):
+            continue
+        if LIBRARY.match(frame_name):
             owner = next((f for f in chain[i + 1:] if f.startswith("corridor::")), "?")
             return "library", f"inside {short(frame, 60)} <- {short(owner, 70)}"
-        if frame.startswith("corridor::") or frame.startswith("void corridor::"):
+        if frame_name.startswith("corridor::"):
             return "project", short(frame)
-        if not RUNTIME.match(frame):
-            return "other", short(frame)
+        return "other", short(frame)
     return "other", short(chain[-1] if chain else "?")
 
 
