@@ -253,6 +253,7 @@ Status DetectCeiling(const cv::Mat& bgr, const Camera& camera, const CorridorGeo
   const CorridorRotation<double> r(g.pitch, g.yaw);
   const double h = g.camera_height;
   std::vector<double> heights;
+  heights.reserve(static_cast<size_t>(10) * lines.samples);  // Two sides, five rows a sample.
   const Vec3<double> n = r.FloorNormal(), m = r.WallNormal();
   for (int side = 0; side < 2; ++side) {
     if ((side == 0 ? best_left : best_right) < o.min_support) continue;

@@ -86,7 +86,10 @@ EdgeSegments DetectSegments(const cv::Mat& image, int roi_top, const SegmentOpti
 }
 
 std::vector<cv::Vec4f> HoughSegments(const EdgeSegments& found, const SegmentOptions& options) {
-  std::vector<cv::Vec4i> lines;
+  // The thread's, keeping its memory from call to call (the transforms clear it first).
+  thread_local std::vector<cv::Vec4i> thread_lines;
+  std::vector<cv::Vec4i>& lines = thread_lines;
+  lines.clear();
   if (found.edges.empty()) return {};
   if (options.hough_angle_window_deg > 0) {
     OrientedHoughOptions hough;
