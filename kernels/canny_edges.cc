@@ -251,7 +251,12 @@ Status CannyFromGradients(const cv::Mat& dx, const cv::Mat& dy, double low, doub
   const uint32_t least = static_cast<uint32_t>(low_m + 1);
   // The map has a border of kNever around the image, so that hysteresis stops there.
   std::vector<uint8_t>& map = scratch.map;
-  map.assign(static_cast<size_t>(rows + 2) * step, kNever);
+  // The border rows now, each image row (with its border columns) just before it is suppressed:
+  // every cell is kNever until a candidate is marked. (Row by row instead of one fill of the
+  // whole map up front: the same bytes, written while the row is in the cache.)
+  map.resize(static_cast<size_t>(rows + 2) * step);
+  std::fill(map.begin(), map.begin() + step, kNever);
+  std::fill(map.end() - step, map.end(), kNever);
   std::vector<int>& stack = scratch.stack;
   stack.clear();
   stack.reserve(1024);
@@ -270,6 +275,7 @@ Status CannyFromGradients(const cv::Mat& dx, const cv::Mat& dy, double low, doub
     const RowView view{above, centre, below, dx.ptr<int16_t>(i), dy.ptr<int16_t>(i),
                        row_candidate[0]};
     const int base = (i + 1) * step + 1;
+    std::fill(map.data() + base - 1, map.data() + base - 1 + step, kNever);
 #ifdef CORRIDOR_AVX2_VARIANTS
     if (avx2) {
       SuppressRowAvx2(view, cols, low_m, high_m, base, map.data(), &stack);
