@@ -160,13 +160,17 @@ OrientedEdges ComputeOrientedEdges(const cv::Mat& bgr, int top, int bottom, Imag
   // thread's, reused from search to search.
   thread_local std::vector<uchar> thread_bits, thread_along;
   std::vector<uchar>& bit_rows = thread_bits;
-  bit_rows.assign(static_cast<size_t>(band.area()), 0);
+  bit_rows.resize(static_cast<size_t>(band.area()));
   cv::Mat bits(band.size(), CV_8U, bit_rows.data());
-  ForEachEdgePixel(out.edges, [&](int u, int r) {
-    const int row = r + band.y;
-    bits.at<uchar>(r, u) =
-        static_cast<uchar>(1u << OrientationBin(dx.at<short>(row, u), dy.at<short>(row, u)));
-  });
+  for (int r = 0; r < band.height; ++r) {  // Each row zeroed, then its edge pixels' bits.
+    uchar* b = bits.ptr<uchar>(r);
+    std::fill(b, b + band.width, 0);
+    const short* gx = dx.ptr<short>(r + band.y);
+    const short* gy = dy.ptr<short>(r + band.y);
+    ForEachNonZeroByte(out.edges.ptr<uchar>(r), 0, band.width, [&](int u) {
+      b[u] = static_cast<uchar>(1u << OrientationBin(gx[u], gy[u]));
+    });
+  }
   out.near.create(band.size(), CV_8U);
   OrNeighbourhoods(bits, &thread_along, &out.near);
   return out;
