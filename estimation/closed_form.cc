@@ -17,6 +17,7 @@ namespace {
 bool MedianLateralPosition(const FloorIntrinsics& k, const CorridorRotation<double>& rotation,
                            const std::vector<Eigen::Vector2d>& points, double* median_x) {
   std::vector<double> x;
+  x.reserve(points.size());
   for (const auto& p : points) {
     Vec3<double> floor_point;
     if (!BackProjectToFloor(k, rotation, p.x(), p.y(), &floor_point)) return false;
@@ -32,6 +33,7 @@ bool MedianLateralPosition(const FloorIntrinsics& k, const CorridorRotation<doub
 std::vector<Eigen::Vector2d> Inliers(const std::vector<Eigen::Vector2d>& points) {
   const std::vector<char> keep = LineInlierMask(points);
   std::vector<Eigen::Vector2d> inliers;
+  inliers.reserve(points.size());
   for (size_t i = 0; i < points.size(); ++i) {
     if (keep[i]) inliers.push_back(points[i]);
   }

@@ -16,8 +16,8 @@ namespace {
 constexpr int kWeighted5 = 0;
 
 // The rows' loops; inlined into each variant below, so that the AVX2 one vectorises them.
-// `k`: the weights when kTaps is kWeighted5.
-template <int C, int kTaps>
+// `k`: the weights when kTaps is kWeighted5. kAvx2: the five-row sums through their AVX2 loops.
+template <int C, int kTaps, bool kAvx2>
 CORRIDOR_ALWAYS_INLINE inline void BlurBody(const cv::Mat& image, int from, int to,
                                             binomial::Kernel5 k, cv::Mat* out) {
   constexpr int kPad = kTaps == 3 ? 1 : 2;
@@ -29,9 +29,25 @@ CORRIDOR_ALWAYS_INLINE inline void BlurBody(const cv::Mat& image, int from, int 
     if (kTaps == 3) {
       binomial::ColumnSums3(row(-1), row(0), row(1), n, v);
     } else if (kTaps == 5) {
+#ifdef CORRIDOR_AVX2_VARIANTS
+      if constexpr (kAvx2) {
+        binomial::ColumnSums5Avx2(row(-2), row(-1), row(0), row(1), row(2), n, v);
+      } else {
+        binomial::ColumnSums5(row(-2), row(-1), row(0), row(1), row(2), n, v);
+      }
+#else
       binomial::ColumnSums5(row(-2), row(-1), row(0), row(1), row(2), n, v);
+#endif
     } else {
+#ifdef CORRIDOR_AVX2_VARIANTS
+      if constexpr (kAvx2) {
+        binomial::WeightedColumnSums5Avx2(row(-2), row(-1), row(0), row(1), row(2), n, k, v);
+      } else {
+        binomial::WeightedColumnSums5(row(-2), row(-1), row(0), row(1), row(2), n, k, v);
+      }
+#else
       binomial::WeightedColumnSums5(row(-2), row(-1), row(0), row(1), row(2), n, k, v);
+#endif
     }
     binomial::ReflectEnds<C>(v, width, kPad);
     uint8_t* h = out->ptr<uint8_t>(y - from);
@@ -49,7 +65,7 @@ using BlurFn = void (*)(const cv::Mat&, int, int, binomial::Kernel5, cv::Mat*);
 
 template <int C, int kTaps>
 void Blur(const cv::Mat& image, int from, int to, binomial::Kernel5 k, cv::Mat* out) {
-  BlurBody<C, kTaps>(image, from, to, k, out);
+  BlurBody<C, kTaps, false>(image, from, to, k, out);
 }
 
 #ifdef CORRIDOR_AVX2_VARIANTS
@@ -57,7 +73,7 @@ void Blur(const cv::Mat& image, int from, int to, binomial::Kernel5 k, cv::Mat* 
 template <int C, int kTaps>
 __attribute__((target("avx2"))) void BlurAvx2(const cv::Mat& image, int from, int to,
                                               binomial::Kernel5 k, cv::Mat* out) {
-  BlurBody<C, kTaps>(image, from, to, k, out);
+  BlurBody<C, kTaps, true>(image, from, to, k, out);
 }
 #endif
 

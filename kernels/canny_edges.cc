@@ -206,6 +206,13 @@ __attribute__((target("avx2"))) void SuppressRowAvx2(const RowView& r, int cols,
 }
 #endif
 
+// CannyFromGradients' working memory.
+struct CannyScratch {
+  std::vector<uint32_t> ring;
+  std::vector<uint8_t> candidates, map;
+  std::vector<int> stack;
+};
+
 }  // namespace
 
 Status CannyFromGradients(const cv::Mat& dx, const cv::Mat& dy, double low, double high, bool l2,
@@ -230,16 +237,28 @@ Status CannyFromGradients(const cv::Mat& dx, const cv::Mat& dy, double low, doub
   // Three rows of magnitudes, each with a zero before and eight after (the last pixel's
   // neighbours in a register); a row outside the image is zero. Beside them, the centre and next
   // rows' candidates (magnitude above `low`).
+  // The buffers are the thread's, reused from call to call (each filled here as if new).
+  thread_local CannyScratch thread_scratch;
+  CannyScratch& scratch = thread_scratch;
   const int ring_step = cols + 9;
-  std::vector<uint32_t> ring(3 * static_cast<size_t>(ring_step), 0);
+  std::vector<uint32_t>& ring = scratch.ring;
+  ring.assign(3 * static_cast<size_t>(ring_step), 0);
   uint32_t* row_mag[3] = {ring.data() + 1, ring.data() + ring_step + 1,
                           ring.data() + 2 * ring_step + 1};
-  std::vector<uint8_t> candidates(2 * static_cast<size_t>(cols), 0);
+  std::vector<uint8_t>& candidates = scratch.candidates;
+  candidates.assign(2 * static_cast<size_t>(cols), 0);
   uint8_t* row_candidate[2] = {candidates.data(), candidates.data() + cols};
   const uint32_t least = static_cast<uint32_t>(low_m + 1);
   // The map has a border of kNever around the image, so that hysteresis stops there.
-  std::vector<uint8_t> map(static_cast<size_t>(rows + 2) * step, kNever);
-  std::vector<int> stack;
+  std::vector<uint8_t>& map = scratch.map;
+  // The border rows now, each image row (with its border columns) just before it is suppressed:
+  // every cell is kNever until a candidate is marked. (Row by row instead of one fill of the
+  // whole map up front: the same bytes, written while the row is in the cache.)
+  map.resize(static_cast<size_t>(rows + 2) * step);
+  std::fill(map.begin(), map.begin() + step, kNever);
+  std::fill(map.end() - step, map.end(), kNever);
+  std::vector<int>& stack = scratch.stack;
+  stack.clear();
   stack.reserve(1024);
 
   magnitude(dx.ptr<int16_t>(0), dy.ptr<int16_t>(0), cols, least, row_mag[1], row_candidate[0]);
@@ -256,6 +275,7 @@ Status CannyFromGradients(const cv::Mat& dx, const cv::Mat& dy, double low, doub
     const RowView view{above, centre, below, dx.ptr<int16_t>(i), dy.ptr<int16_t>(i),
                        row_candidate[0]};
     const int base = (i + 1) * step + 1;
+    std::fill(map.data() + base - 1, map.data() + base - 1 + step, kNever);
 #ifdef CORRIDOR_AVX2_VARIANTS
     if (avx2) {
       SuppressRowAvx2(view, cols, low_m, high_m, base, map.data(), &stack);

@@ -5,21 +5,22 @@
 
 #include <opencv2/imgproc.hpp>
 
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
+
 #include "core/cpu_features.h"
 #include "kernels/image_border.h"
 
 namespace corridor {
 namespace {
 
-// Sobel of one 8-bit row triple (above, centre, below): gx = s[u+1] - s[u-1] with
-// s = above + 2 centre + below, gy = t[u-1] + 2 t[u] + t[u+1] with t = below - above. `s` and `t`
-// are scratch rows of cols + 2 with the reflected columns at 0 and cols + 1. The first channel
-// (kFirst) writes gx, gy and |gx| + |gy| to bx, by, best; the others replace them where their
-// |gx| + |gy| is larger.
-template <bool kFirst>
-CORRIDOR_ALWAYS_INLINE inline void SobelRowBody(const uchar* above, const uchar* centre, const uchar* below, int cols,
-                                                short* __restrict s, short* __restrict t, short* __restrict bx,
-                                                short* __restrict by, short* __restrict best) {
+// Sobel of one channel's 8-bit row triple (above, centre, below): gx = s[u+1] - s[u-1] with
+// s = above + 2 centre + below, gy = t[u-1] + 2 t[u] + t[u+1] with t = below - above. Its s and
+// t rows (cols + 2, the reflected columns at 0 and cols + 1):
+CORRIDOR_ALWAYS_INLINE inline void SobelSumsBody(const uchar* above, const uchar* centre,
+                                                 const uchar* below, int cols,
+                                                 short* __restrict s, short* __restrict t) {
   for (int u = 0; u < cols; ++u) {
     s[u + 1] = static_cast<short>(above[u] + 2 * centre[u] + below[u]);
     t[u + 1] = static_cast<short>(below[u] - above[u]);
@@ -28,43 +29,93 @@ CORRIDOR_ALWAYS_INLINE inline void SobelRowBody(const uchar* above, const uchar*
   t[0] = t[Reflect101(-1, cols) + 1];
   s[cols + 1] = s[Reflect101(cols, cols) + 1];
   t[cols + 1] = t[Reflect101(cols, cols) + 1];
-  for (int u = 0; u < cols; ++u) {
-    const short x = static_cast<short>(s[u + 2] - s[u]);
-    const short y = static_cast<short>(t[u] + 2 * t[u + 1] + t[u + 2]);
-    const short m = static_cast<short>(std::abs(x) + std::abs(y));
-    if (kFirst) {
-      bx[u] = x;
-      by[u] = y;
-      best[u] = m;
-    } else {
-      // Branch-free selects through a mask (all ones where this channel's edge is stronger),
-      // so that the loop vectorises.
-      const short larger = static_cast<short>(-static_cast<short>(m > best[u]));
-      bx[u] = static_cast<short>((x & larger) | (bx[u] & ~larger));
-      by[u] = static_cast<short>((y & larger) | (by[u] & ~larger));
-      best[u] = static_cast<short>((m & larger) | (best[u] & ~larger));
-    }
+}
+
+// One channel's gx, gy and |gx| + |gy| at u from its s and t rows; the first channel (kFirst)
+// sets x, y and mag, the others replace them where larger (branch-free selects through a mask,
+// so that the loop vectorises).
+template <bool kFirst>
+CORRIDOR_ALWAYS_INLINE inline void SelectChannel(const short* s, const short* t, int u, short* x,
+                                                 short* y, short* mag) {
+  const short cx = static_cast<short>(s[u + 2] - s[u]);
+  const short cy = static_cast<short>(t[u] + 2 * t[u + 1] + t[u + 2]);
+  const short cm = static_cast<short>(std::abs(cx) + std::abs(cy));
+  if (kFirst) {
+    *x = cx, *y = cy, *mag = cm;
+  } else {
+    const short larger = static_cast<short>(-static_cast<short>(cm > *mag));
+    *x = static_cast<short>((cx & larger) | (*x & ~larger));
+    *y = static_cast<short>((cy & larger) | (*y & ~larger));
+    *mag = static_cast<short>((cm & larger) | (*mag & ~larger));
   }
 }
 
-using SobelRowFn = void (*)(const uchar*, const uchar*, const uchar*, int, short*, short*, short*,
-                            short*, short*);
+// All kChannels channels of a row (planar rows above, at and below): their s and t rows into
+// `sums` (2 (cols + 2) shorts a channel), then one pass choosing per pixel among the channels
+// in registers, storing bx, by and best once.
+template <int kChannels>
+CORRIDOR_ALWAYS_INLINE inline void ChannelsRowBody(const uchar* const* above,
+                                                   const uchar* const* centre,
+                                                   const uchar* const* below, int cols,
+                                                   short* sums, short* __restrict bx,
+                                                   short* __restrict by, short* __restrict best) {
+  const int stride = 2 * (cols + 2);
+  for (int c = 0; c < kChannels; ++c) {
+    SobelSumsBody(above[c], centre[c], below[c], cols, sums + c * stride,
+                  sums + c * stride + cols + 2);
+  }
+  const short* s0 = sums;
+  const short* t0 = s0 + cols + 2;
+  const short* s1 = sums + (kChannels > 1 ? 1 : 0) * stride;
+  const short* t1 = s1 + cols + 2;
+  const short* s2 = sums + (kChannels > 2 ? 2 : 0) * stride;
+  const short* t2 = s2 + cols + 2;
+  const short* s3 = sums + (kChannels > 3 ? 3 : 0) * stride;
+  const short* t3 = s3 + cols + 2;
+  // The outputs never overlap the sums (GCC cannot tell, and checking it at run time for every
+  // pointer pair is more than it will do).
+#pragma GCC ivdep
+  for (int u = 0; u < cols; ++u) {
+    short x, y, mag;
+    SelectChannel<true>(s0, t0, u, &x, &y, &mag);
+    if (kChannels > 1) SelectChannel<false>(s1, t1, u, &x, &y, &mag);
+    if (kChannels > 2) SelectChannel<false>(s2, t2, u, &x, &y, &mag);
+    if (kChannels > 3) SelectChannel<false>(s3, t3, u, &x, &y, &mag);
+    bx[u] = x;
+    by[u] = y;
+    best[u] = mag;
+  }
+}
 
-template <bool kFirst>
-void SobelRow(const uchar* above, const uchar* centre, const uchar* below, int cols, short* s,
-              short* t, short* bx, short* by, short* best) {
-  SobelRowBody<kFirst>(above, centre, below, cols, s, t, bx, by, best);
+using ChannelsRowFn = void (*)(const uchar* const*, const uchar* const*, const uchar* const*,
+                               int, short*, short*, short*, short*);
+
+template <int kChannels>
+void ChannelsRow(const uchar* const* above, const uchar* const* centre, const uchar* const* below,
+                 int cols, short* sums, short* bx, short* by, short* best) {
+  ChannelsRowBody<kChannels>(above, centre, below, cols, sums, bx, by, best);
 }
 
 #ifdef CORRIDOR_AVX2_VARIANTS
-// The same rows compiled for AVX2 (16 shorts a step): integer arithmetic, the same results.
-template <bool kFirst>
-__attribute__((target("avx2"))) void SobelRowAvx2(const uchar* above, const uchar* centre,
-                                                  const uchar* below, int cols, short* s,
-                                                  short* t, short* bx, short* by, short* best) {
-  SobelRowBody<kFirst>(above, centre, below, cols, s, t, bx, by, best);
+template <int kChannels>
+__attribute__((target("avx2"))) void ChannelsRowAvx2(const uchar* const* above,
+                                                     const uchar* const* centre,
+                                                     const uchar* const* below, int cols,
+                                                     short* sums, short* bx, short* by,
+                                                     short* best) {
+  ChannelsRowBody<kChannels>(above, centre, below, cols, sums, bx, by, best);
 }
 #endif
+
+// The row function for n channels (2 to 4): AVX2 where the CPU has it.
+ChannelsRowFn ChooseChannelsRow(int n) {
+#ifdef CORRIDOR_AVX2_VARIANTS
+  if (CpuHasAvx2()) {
+    return n == 2 ? ChannelsRowAvx2<2> : n == 3 ? ChannelsRowAvx2<3> : ChannelsRowAvx2<4>;
+  }
+#endif
+  return n == 2 ? ChannelsRow<2> : n == 3 ? ChannelsRow<3> : ChannelsRow<4>;
+}
 
 // Splits one row of 8-bit pixels of n channels (2 to 4) into n planar rows.
 CORRIDOR_ALWAYS_INLINE inline void DeinterleaveBody(const uchar* pixels, int cols, int n,
@@ -99,19 +150,12 @@ __attribute__((target("avx2"))) void DeinterleaveAvx2(const uchar* pixels, int c
 }
 #endif
 
-// The row functions for the first channel and the others: AVX2 where the CPU has it.
-void ChooseSobelRows(SobelRowFn* first, SobelRowFn* others, DeinterleaveFn* split) {
+// The row split: AVX2 where the CPU has it.
+DeinterleaveFn ChooseDeinterleave() {
 #ifdef CORRIDOR_AVX2_VARIANTS
-  if (CpuHasAvx2()) {
-    *first = SobelRowAvx2<true>;
-    *others = SobelRowAvx2<false>;
-    *split = DeinterleaveAvx2;
-    return;
-  }
+  if (CpuHasAvx2()) return DeinterleaveAvx2;
 #endif
-  *first = SobelRow<true>;
-  *others = SobelRow<false>;
-  *split = Deinterleave;
+  return Deinterleave;
 }
 
 // The same through cv::Sobel: grey images (a view keeps using the pixels around it, as
@@ -145,9 +189,51 @@ void ColorGradientOpenCv(const cv::Mat& image, cv::Mat* dx, cv::Mat* dy) {
   }
 }
 
+// ColorGradient's working memory: planar rows and Sobel scratch rows.
+struct GradientScratch {
+  std::vector<uchar> plane_rows;
+  std::vector<short> rows;
+};
+
 }  // namespace
 
-void ColorGradient(const cv::Mat& image, cv::Mat* dx, cv::Mat* dy, std::vector<int>* histogram) {
+namespace {
+
+// Adds a row of |dx| + |dy| values (0 .. 2040) to the histogram, those below `floor` (> 0) all to
+// bin floor - 1: eight values a step with SSE2, the small ones only counted.
+void AddRowAboveFloor(const short* best, int cols, int floor, int* bins) {
+  int u = 0, below = 0;
+#ifdef __SSE2__
+  const __m128i limit = _mm_set1_epi16(static_cast<short>(floor));
+  __m128i small = _mm_setzero_si128();  // Per lane, minus the count of values below the floor.
+  for (; u + 8 <= cols; u += 8) {
+    const __m128i b = _mm_loadu_si128(reinterpret_cast<const __m128i*>(best + u));
+    const __m128i is_small = _mm_cmplt_epi16(b, limit);
+    small = _mm_add_epi16(small, is_small);
+    // One bit per lane (the low byte's) of the values at least the floor.
+    for (int large = ~_mm_movemask_epi8(is_small) & 0x5555; large != 0; large &= large - 1) {
+      ++bins[std::min<int>(kGradientBins - 1, best[u + (__builtin_ctz(large) >> 1)])];
+    }
+  }
+  alignas(16) short lanes[8];
+  _mm_store_si128(reinterpret_cast<__m128i*>(lanes), small);
+  for (const short lane : lanes) below -= lane;
+#endif
+  for (; u < cols; ++u) {
+    if (best[u] < floor) {
+      ++below;
+    } else {
+      ++bins[std::min<int>(kGradientBins - 1, best[u])];
+    }
+  }
+  bins[floor - 1] += below;
+}
+
+}  // namespace
+
+void ColorGradient(const cv::Mat& image, cv::Mat* dx, cv::Mat* dy, std::vector<int>* histogram,
+                   int histogram_floor) {
+  histogram_floor = std::clamp(histogram_floor, 0, kGradientBins);
   if (image.depth() != CV_8U || image.channels() == 1 || image.channels() > 4) {
     ColorGradientOpenCv(image, dx, dy);
     if (histogram != nullptr) {
@@ -167,15 +253,18 @@ void ColorGradient(const cv::Mat& image, cv::Mat* dx, cv::Mat* dy, std::vector<i
   // below the current one (Reflect101 at the borders) are always in distinct slots, so nothing is
   // split twice and the planes stay in the cache (cv::split of the whole image first is slower:
   // docs/results.md, "Image kernels").
-  std::vector<uchar> plane_rows(static_cast<size_t>(3) * n * cols);
+  // Its buffers are the thread's, reused from call to call.
+  thread_local GradientScratch thread_scratch;
+  GradientScratch& work = thread_scratch;
+  std::vector<uchar>& plane_rows = work.plane_rows;
+  plane_rows.assign(static_cast<size_t>(3) * n * cols, 0);
   uchar* planes[3][4];
   int slot_row[3] = {-1, -1, -1};
   for (int k = 0; k < 3; ++k) {
     for (int c = 0; c < n; ++c) planes[k][c] = plane_rows.data() + (k * n + c) * cols;
   }
-  SobelRowFn first_row, other_row;
-  DeinterleaveFn deinterleave;
-  ChooseSobelRows(&first_row, &other_row, &deinterleave);
+  const DeinterleaveFn deinterleave = ChooseDeinterleave();
+  const ChannelsRowFn channels_row = ChooseChannelsRow(n);
   const auto split_row = [&](int r) -> uchar* const* {
     uchar* const* slot = planes[r % 3];
     if (slot_row[r % 3] != r) {
@@ -187,11 +276,11 @@ void ColorGradient(const cv::Mat& image, cv::Mat* dx, cv::Mat* dy, std::vector<i
   dx->create(rows, cols, CV_16S);
   dy->create(rows, cols, CV_16S);
   if (histogram != nullptr) histogram->assign(kGradientBins, 0);
-  // Scratch rows: s, t (cols + 2 each) and the best |dx| + |dy| so far.
-  std::vector<short> scratch(2 * (cols + 2) + cols);
-  short* s = scratch.data();
-  short* t = s + cols + 2;
-  short* best = t + cols + 2;
+  // Scratch rows: s and t of each channel (cols + 2 each) and the best |dx| + |dy|.
+  std::vector<short>& scratch = work.rows;
+  scratch.assign(static_cast<size_t>(2 * n + 1) * (cols + 2), 0);
+  short* sums = scratch.data();
+  short* best = sums + 2 * n * (cols + 2);
   for (int r = 0; r < rows; ++r) {
     const int above = Reflect101(r - 1, rows), below = Reflect101(r + 1, rows);
     short* bx = dx->ptr<short>(r);
@@ -199,9 +288,10 @@ void ColorGradient(const cv::Mat& image, cv::Mat* dx, cv::Mat* dy, std::vector<i
     uchar* const* a = split_row(above);
     uchar* const* m = split_row(r);
     uchar* const* b = split_row(below);
-    first_row(a[0], m[0], b[0], cols, s, t, bx, by, best);
-    for (int c = 1; c < n; ++c) other_row(a[c], m[c], b[c], cols, s, t, bx, by, best);
-    if (histogram != nullptr) {
+    channels_row(a, m, b, cols, sums, bx, by, best);
+    if (histogram != nullptr && histogram_floor > 0) {
+      AddRowAboveFloor(best, cols, histogram_floor, histogram->data());
+    } else if (histogram != nullptr) {
       int* bins = histogram->data();
       for (int u = 0; u < cols; ++u) ++bins[std::min<int>(kGradientBins - 1, best[u])];
     }

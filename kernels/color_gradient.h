@@ -16,7 +16,11 @@ constexpr int kGradientBins = 2048;
 // (through cv::Sobel, so a view uses the pixels around it). When `histogram` is not null it
 // receives kGradientBins counts of min(|dx| + |dy|, bins - 1). Multi-channel 8-bit images take
 // one fused pass; other depths go through cv::Sobel per channel, with the same result.
-void ColorGradient(const cv::Mat& image, cv::Mat* dx, cv::Mat* dy, std::vector<int>* histogram);
+// With `histogram_floor` F > 0 the values below F may all be counted in bin F - 1 (the bins below
+// it then hold 0): HistogramPercentile still gives every percentile that is at least F, and F - 1
+// for the others; counting the many small values together is cheaper.
+void ColorGradient(const cv::Mat& image, cv::Mat* dx, cv::Mat* dy, std::vector<int>* histogram,
+                   int histogram_floor = 0);
 
 // The p-th percentile (0..100) of a gradient histogram of `total` pixels: the first bin at which
 // the running count reaches p% of them.

@@ -96,6 +96,7 @@ FloorAppearance SampleFloor(const cv::Mat& bgr, int roi_top, int step) {
   const int u0 = static_cast<int>(0.35 * cols);
   const int u1 = std::max(u0 + 1, static_cast<int>(0.65 * cols));
   std::vector<cv::Vec3b> patch;
+  patch.reserve(static_cast<size_t>((rows - v0 + step - 1) / step) * ((u1 - u0 + step - 1) / step));
   for (int v = v0; v < rows; v += step) {
     for (int u = u0; u < u1; u += step) patch.push_back(bgr.at<cv::Vec3b>(v, u));
   }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include <opencv2/imgproc.hpp>
@@ -34,15 +35,15 @@ struct SearchLines {
 // into out[i] ((-1, -1) where not visible); returns how many it did (a multiple of four; the
 // caller projects the rest). The same operations as ProjectCorridorPoint with a 1 px margin
 // (rotation as ToCamera adds it, then f x / z + c, then cvRound's rounding to nearest even; no
-// FMA), so the same pixels.
+// FMA), so the same pixels. *top and *bottom take in the rows of the visible ones.
 using RowProjector = int (*)(const Camera&, const CorridorRotation<double>&, double, double,
-                             const double*, int, cv::Point*);
+                             const double*, int, cv::Point*, int* top, int* bottom);
 
 #ifdef CORRIDOR_AVX2_VARIANTS
 __attribute__((target("avx2"))) int ProjectRowAvx2(const Camera& camera,
                                                    const CorridorRotation<double>& r, double x,
                                                    double y, const double* z, int n,
-                                                   cv::Point* out) {
+                                                   cv::Point* out, int* top, int* bottom) {
   const auto& m = r.m;
   // The x and y products of each camera coordinate, added first as ToCamera adds them.
   const __m256d cx_xy = _mm256_set1_pd(m[0][0] * x + m[0][1] * y);
@@ -56,6 +57,10 @@ __attribute__((target("avx2"))) int ProjectRowAvx2(const Camera& camera,
   const __m128i one = _mm_set1_epi32(1), zero = _mm_setzero_si128();
   const __m128i max_u = _mm_set1_epi32(camera.image_width - 1);
   const __m128i max_v = _mm_set1_epi32(camera.image_height - 1);
+  // The rows of the visible points: their least and largest (INT_MAX / -1 where not visible).
+  __m128i least = _mm_set1_epi32(*top), most = _mm_set1_epi32(*bottom);
+  const __m128i none_high = _mm_set1_epi32(std::numeric_limits<int>::max());
+  const __m128i none_low = _mm_set1_epi32(-1);
   int i = 0;
   for (; i + 4 <= n; i += 4) {
     const __m256d zw = _mm256_loadu_pd(z + i);
@@ -74,13 +79,24 @@ __attribute__((target("avx2"))) int ProjectRowAvx2(const Camera& camera,
     ok = _mm_and_si128(ok, _mm_cmpgt_epi32(vi, zero));
     ok = _mm_and_si128(ok, _mm_cmpgt_epi32(max_u, ui));
     ok = _mm_and_si128(ok, _mm_cmpgt_epi32(max_v, vi));
-    alignas(16) int pu[4], pv[4], keep[4];
-    _mm_store_si128(reinterpret_cast<__m128i*>(pu), ui);
-    _mm_store_si128(reinterpret_cast<__m128i*>(pv), vi);
-    _mm_store_si128(reinterpret_cast<__m128i*>(keep), ok);
-    for (int k = 0; k < 4; ++k) {
-      out[i + k] = keep[k] != 0 ? cv::Point(pu[k], pv[k]) : cv::Point(-1, -1);
-    }
+    least = _mm_min_epi32(least, _mm_blendv_epi8(none_high, vi, ok));
+    most = _mm_max_epi32(most, _mm_blendv_epi8(none_low, vi, ok));
+    // (u, v) pairs of the four points, (-1, -1) where not visible: cv::Point is two ints.
+    static_assert(sizeof(cv::Point) == 2 * sizeof(int), "cv::Point is (x, y) ints");
+    const __m128i not_seen = _mm_set1_epi32(-1);
+    const __m128i pairs_lo = _mm_unpacklo_epi32(ui, vi), pairs_hi = _mm_unpackhi_epi32(ui, vi);
+    const __m128i ok_lo = _mm_unpacklo_epi32(ok, ok), ok_hi = _mm_unpackhi_epi32(ok, ok);
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(out + i),
+                     _mm_blendv_epi8(not_seen, pairs_lo, ok_lo));
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(out + i + 2),
+                     _mm_blendv_epi8(not_seen, pairs_hi, ok_hi));
+  }
+  alignas(16) int rows[2][4];
+  _mm_store_si128(reinterpret_cast<__m128i*>(rows[0]), least);
+  _mm_store_si128(reinterpret_cast<__m128i*>(rows[1]), most);
+  for (int k = 0; k < 4; ++k) {
+    *top = std::min(*top, rows[0][k]);
+    *bottom = std::max(*bottom, rows[1][k]);
   }
   return i;
 }
@@ -134,17 +150,18 @@ void ProjectSearchLines(const Camera& camera, const CorridorGeometry& g,
     const double y = h - height;  // Corridor Y of the ceiling (negative: above the camera).
     for (int side = 0; side < 2; ++side, out += o.samples) {
       int i = 0;
-      if (fast != nullptr) i = fast(camera, r, wall_x[side], y, depths.data(), o.samples, out);
+      if (fast != nullptr) {
+        i = fast(camera, r, wall_x[side], y, depths.data(), o.samples, out, &lines->top,
+                 &lines->bottom);
+      }
       for (; i < o.samples; ++i) {
         cv::Point p;
         const bool seen =
             ProjectCorridorPoint(camera, distorted, r, wall_x[side], y, depths[i], 1, &p);
         out[i] = seen ? p : cv::Point(-1, -1);
-      }
-      for (int k = 0; k < o.samples; ++k) {
-        if (out[k].x < 0) continue;
-        lines->top = std::min(lines->top, out[k].y);
-        lines->bottom = std::max(lines->bottom, out[k].y);
+        if (!seen) continue;
+        lines->top = std::min(lines->top, p.y);
+        lines->bottom = std::max(lines->bottom, p.y);
       }
     }
   }
@@ -236,6 +253,7 @@ Status DetectCeiling(const cv::Mat& bgr, const Camera& camera, const CorridorGeo
   const CorridorRotation<double> r(g.pitch, g.yaw);
   const double h = g.camera_height;
   std::vector<double> heights;
+  heights.reserve(static_cast<size_t>(10) * lines.samples);  // Two sides, five rows a sample.
   const Vec3<double> n = r.FloorNormal(), m = r.WallNormal();
   for (int side = 0; side < 2; ++side) {
     if ((side == 0 ? best_left : best_right) < o.min_support) continue;

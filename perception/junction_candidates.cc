@@ -23,6 +23,8 @@ JunctionScenePrior MakeJunctionScenePrior(const JunctionDetectorOptions& options
 void AddJunctionCandidates(const std::vector<MergedLine>& lines, double shortest,
                            const JunctionScenePrior& prior, const FloorCues& cues,
                            PairSearch* search) {
+  search->left.reserve(search->left.size() + lines.size());
+  search->right.reserve(search->right.size() + lines.size());
   for (const auto& line : lines) {
     if (line.length < shortest || line.length > prior.max_length) continue;
     if (line.inclination_deg < prior.min_inclination_deg ||

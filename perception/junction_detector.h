@@ -36,5 +36,8 @@ Status DetectJunctions(const cv::Mat& bgr, const cv::Mat& halved,
 // junction's, left of vp; else right of it; and not above it), in order: a junction's support.
 std::vector<Eigen::Vector2d> FloorSidePixels(const std::vector<Eigen::Vector2d>& edges,
                                              const Eigen::Vector2d& vp, bool left);
+// The same into *side (its memory reused).
+void FloorSidePixels(const std::vector<Eigen::Vector2d>& edges, const Eigen::Vector2d& vp,
+                     bool left, std::vector<Eigen::Vector2d>* side);
 
 }  // namespace corridor

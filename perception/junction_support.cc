@@ -27,18 +27,29 @@ void KeepWhere(const std::vector<Eigen::Vector2d>& from, Keep keep,
   to->resize(kept);
 }
 
+// RefineJunction's working memory.
+struct RefineScratch {
+  std::vector<Eigen::Vector2d> side, near, fitted;
+  std::vector<int> bins;
+};
+
 }  // namespace
 
 std::vector<Eigen::Vector2d> FloorSidePixels(const std::vector<Eigen::Vector2d>& edges,
                                              const Eigen::Vector2d& vp, bool left) {
   std::vector<Eigen::Vector2d> side;
+  FloorSidePixels(edges, vp, left, &side);
+  return side;
+}
+
+void FloorSidePixels(const std::vector<Eigen::Vector2d>& edges, const Eigen::Vector2d& vp,
+                     bool left, std::vector<Eigen::Vector2d>* side) {
   KeepWhere(
       edges, [&](const Eigen::Vector2d& p) {
         const bool beyond = left ? p.x() > vp.x() : p.x() < vp.x();
         return !beyond & !(p.y() < vp.y());
       },
-      &side);
-  return side;
+      side);
 }
 
 void SupportPixels(const std::vector<Eigen::Vector2d>& side, const Eigen::Vector3d& line,
@@ -55,11 +66,39 @@ JunctionLine RefineJunction(const JunctionCandidate& candidate,
                             bool left, double distance, double image_height) {
   JunctionLine out;
   Eigen::Vector3d line = candidate.line.line;
-  const std::vector<Eigen::Vector2d> side = FloorSidePixels(edges, vp, left);
-  std::vector<Eigen::Vector2d> support, fitted;  // `fitted`: the pixels `line` was fitted to.
+  // The side's pixels, the last fit's and the support's positions along the line in the thread's
+  // scratch, which keeps its memory from call to call; `support` becomes the result's.
+  thread_local RefineScratch thread_scratch;
+  RefineScratch& scratch = thread_scratch;
+  std::vector<Eigen::Vector2d>& side = scratch.side;
+  FloorSidePixels(edges, vp, left, &side);
+  std::vector<Eigen::Vector2d> support;
+  std::vector<Eigen::Vector2d>& fitted = scratch.fitted;  // The pixels `line` was fitted to.
+  fitted.clear();
   bool final_support = false;                    // True once `support` is the final (distance, line) support.
+  // The side's pixels within 2 distance + kSlack of the candidate: a support of a line that moved
+  // less than the rest of that reach over the side's extent (|a' - a| max|u| + |b' - b| max|v| +
+  // |c' - c|, a bound on how far any pixel's distance moved) has no pixel outside them, so it is
+  // found among them alone; else among all.
+  constexpr double kSlack = 8.0;
+  const Eigen::Vector3d first_line = line;
+  const double reach = 2 * distance + kSlack;
+  double max_u = 0, max_v = 0;
+  for (const Eigen::Vector2d& p : side) {
+    max_u = std::max(max_u, std::abs(p.x()));
+    max_v = std::max(max_v, std::abs(p.y()));
+  }
+  std::vector<Eigen::Vector2d>& near = scratch.near;
+  SupportPixels(side, first_line, reach, &near);
+  const auto pixels_for = [&](const Eigen::Vector3d& l,
+                              double d) -> const std::vector<Eigen::Vector2d>& {
+    const Eigen::Vector3d moved = (l - first_line).cwiseAbs();
+    const double bound = moved.x() * max_u + moved.y() * max_v + moved.z();
+    return bound <= reach - d - 1e-6 ? near : side;  // 1e-6 px: more than rounding can move.
+  };
   for (int round = 0; round < 3; ++round) {
-    SupportPixels(side, line, round == 0 ? 2 * distance : distance, &support);
+    const double d = round == 0 ? 2 * distance : distance;
+    SupportPixels(pixels_for(line, d), line, d, &support);
     // The same pixels give the same fit (FitLineLeastDistance is deterministic): the line has
     // converged.
     if (round > 0 && support == fitted) {
@@ -71,7 +110,7 @@ JunctionLine RefineJunction(const JunctionCandidate& candidate,
     line = refit;
     fitted.swap(support);
   }
-  if (!final_support) SupportPixels(side, line, distance, &support);
+  if (!final_support) SupportPixels(pixels_for(line, distance), line, distance, &support);
   out.line = line;
   const Eigen::Vector2d direction(line.y(), -line.x());
   const Eigen::Vector2d origin = -line.z() * line.head<2>();
@@ -79,7 +118,8 @@ JunctionLine RefineJunction(const JunctionCandidate& candidate,
     support = {candidate.line.start, candidate.line.end};
   }
   double lo = 1e300, hi = -1e300;
-  std::vector<int> bins;
+  std::vector<int>& bins = scratch.bins;
+  bins.clear();
   for (const auto& p : support) {
     const double t = (p - origin).dot(direction);
     lo = std::min(lo, t);

@@ -144,7 +144,8 @@ bool FitCandidate(const std::vector<Eigen::Vector2d>& points, double support_dis
   SetSupport(std::move(support), step_px, &junction);
   MergedLine& merged = candidate->merged;
   merged.line = line;
-  SetExtentAlongLine({junction.near_end, junction.far_end}, &merged);
+  const Eigen::Vector2d ends[2] = {junction.near_end, junction.far_end};
+  SetExtentAlongLine(ends, 2, &merged);
   merged.covered = junction.support_length;
   return true;
 }

@@ -15,6 +15,14 @@
 namespace corridor {
 namespace {
 
+// MergeSegments' working memory: the segments' order and each group's endpoints and weights
+// (only the first as many lists as there are groups are in use).
+struct MergeScratch {
+  std::vector<int> order;
+  std::vector<std::vector<Eigen::Vector2d>> members;
+  std::vector<std::vector<double>> weights;
+};
+
 // Orients the line so that its normal points down (b > 0, or a > 0 for vertical lines).
 Eigen::Vector3d Normalise(Eigen::Vector3d line) {
   line /= line.head<2>().norm();
@@ -25,11 +33,15 @@ Eigen::Vector3d Normalise(Eigen::Vector3d line) {
 }  // namespace
 
 void SetExtentAlongLine(const std::vector<Eigen::Vector2d>& points, MergedLine* m) {
+  SetExtentAlongLine(points.data(), points.size(), m);
+}
+
+void SetExtentAlongLine(const Eigen::Vector2d* points, size_t count, MergedLine* m) {
   const Eigen::Vector2d direction(m->line.y(), -m->line.x());  // Along the line, u increasing.
   const Eigen::Vector2d origin = -m->line.z() * m->line.head<2>();
   double lo = 1e300, hi = -1e300;
-  for (const auto& p : points) {
-    const double t = (p - origin).dot(direction);
+  for (size_t i = 0; i < count; ++i) {
+    const double t = (points[i] - origin).dot(direction);
     lo = std::min(lo, t);
     hi = std::max(hi, t);
   }
@@ -54,7 +66,12 @@ EdgeSegments DetectSegments(const cv::Mat& image, int roi_top, const SegmentOpti
   cv::Mat dx, dy;
   std::vector<int> histogram;
   const bool automatic = !(options.canny_high > 0);
-  ColorGradient(smooth, &dx, &dy, automatic ? &histogram : nullptr);
+  // The threshold is at least auto_min: the gradients below it need only be counted together.
+  const int histogram_floor =
+      automatic && options.auto_min > 0 && options.auto_min <= kGradientBins
+          ? static_cast<int>(std::ceil(options.auto_min))
+          : 0;
+  ColorGradient(smooth, &dx, &dy, automatic ? &histogram : nullptr, histogram_floor);
   const double high =
       automatic ? std::max(options.auto_min,
                            HistogramPercentile(histogram, static_cast<double>(dx.total()),
@@ -69,7 +86,10 @@ EdgeSegments DetectSegments(const cv::Mat& image, int roi_top, const SegmentOpti
 }
 
 std::vector<cv::Vec4f> HoughSegments(const EdgeSegments& found, const SegmentOptions& options) {
-  std::vector<cv::Vec4i> lines;
+  // The thread's, keeping its memory from call to call (the transforms clear it first).
+  thread_local std::vector<cv::Vec4i> thread_lines;
+  std::vector<cv::Vec4i>& lines = thread_lines;
+  lines.clear();
   if (found.edges.empty()) return {};
   if (options.hough_angle_window_deg > 0) {
     OrientedHoughOptions hough;
@@ -94,15 +114,20 @@ std::vector<cv::Vec4f> HoughSegments(const EdgeSegments& found, const SegmentOpt
 MergedLine LineThrough(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
   MergedLine m;
   m.line = Normalise(Eigen::Vector3d(a.x(), a.y(), 1).cross(Eigen::Vector3d(b.x(), b.y(), 1)));
-  SetExtentAlongLine({a, b}, &m);
+  const Eigen::Vector2d ends[2] = {a, b};
+  SetExtentAlongLine(ends, 2, &m);
   m.covered = m.length;
   return m;
 }
 
 std::vector<MergedLine> MergeSegments(const std::vector<cv::Vec4f>& segments, double angle_deg,
                                       double distance_px) {
-  // Longest first, so that each group is seeded by its most reliable segment.
-  std::vector<int> order(segments.size());
+  // Longest first, so that each group is seeded by its most reliable segment. The order and the
+  // groups' points live in the thread's scratch, which keeps its memory from call to call.
+  thread_local MergeScratch thread_scratch;
+  MergeScratch& scratch = thread_scratch;
+  std::vector<int>& order = scratch.order;
+  order.resize(segments.size());
   for (size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
   const auto length = [&](int i) {
     const auto& s = segments[i];
@@ -111,8 +136,9 @@ std::vector<MergedLine> MergeSegments(const std::vector<cv::Vec4f>& segments, do
   std::sort(order.begin(), order.end(), [&](int a, int b) { return length(a) > length(b); });
   const double cos_tol = std::cos(angle_deg * M_PI / 180.0);
   std::vector<MergedLine> merged;
-  std::vector<std::vector<Eigen::Vector2d>> members;
-  std::vector<std::vector<double>> weights;
+  merged.reserve(segments.size());
+  std::vector<std::vector<Eigen::Vector2d>>& members = scratch.members;
+  std::vector<std::vector<double>>& weights = scratch.weights;
   for (int i : order) {
     const auto& s = segments[i];
     const Eigen::Vector2d a(s[0], s[1]), b(s[2], s[3]);
@@ -126,9 +152,12 @@ std::vector<MergedLine> MergeSegments(const std::vector<cv::Vec4f>& segments, do
       if (da <= distance_px && db <= distance_px) group = static_cast<int>(g);
     }
     if (group < 0) {
+      // A new group: the next of the scratch's point lists, emptied (or a new one).
+      const size_t g = merged.size();
       merged.push_back(candidate);
-      members.push_back({a, b});
-      weights.push_back({candidate.length, candidate.length});
+      if (members.size() <= g) members.resize(g + 1), weights.resize(g + 1);
+      members[g].assign({a, b});
+      weights[g].assign({candidate.length, candidate.length});
       continue;
     }
     members[group].push_back(a);

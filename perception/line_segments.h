@@ -22,6 +22,8 @@ struct MergedLine {
 // Fills m's start, end, length, slope and inclination from `points` projected onto m->line (which
 // must be set, with b >= 0).
 void SetExtentAlongLine(const std::vector<Eigen::Vector2d>& points, MergedLine* m);
+// The same from `count` points at `points` (no vector needed).
+void SetExtentAlongLine(const Eigen::Vector2d* points, size_t count, MergedLine* m);
 
 // Canny edges (in the ROI rows [roi_top, rows)) and their Hough segments in full-image coordinates.
 struct EdgeSegments {

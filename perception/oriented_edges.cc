@@ -6,6 +6,10 @@
 
 #include <opencv2/imgproc.hpp>
 
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
+
 #include "kernels/binomial_blur.h"
 #include "kernels/canny_edges.h"
 #include "kernels/color_gradient.h"
@@ -20,24 +24,55 @@ constexpr int kBandMargin = 8;
 // height: a later search of the frame, with the walls moved, reaches a little farther down.
 constexpr int kCacheSlackPercent = 4;
 
+// The OR of three bytes across (a[u - 1] | a[u] | a[u + 1]) for u in [1, cols - 1), 16 at a time
+// where SSE2 is there; returns the first u not done.
+inline int OrAcross(const uchar* a, int cols, uchar* out) {
+  int u = 1;
+#ifdef __SSE2__
+  for (; u + 17 <= cols; u += 16) {
+    const __m128i left = _mm_loadu_si128(reinterpret_cast<const __m128i*>(a + u - 1));
+    const __m128i mid = _mm_loadu_si128(reinterpret_cast<const __m128i*>(a + u));
+    const __m128i right = _mm_loadu_si128(reinterpret_cast<const __m128i*>(a + u + 1));
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(out + u),
+                     _mm_or_si128(_mm_or_si128(left, mid), right));
+  }
+#endif
+  for (; u + 1 < cols; ++u) out[u] = static_cast<uchar>(a[u - 1] | a[u] | a[u + 1]);
+  return u;
+}
+
 // out(r, u) = the OR of bits over the 3x3 pixels around (r, u) inside the image: the OR of three
-// neighbours along each row, then of three such rows.
-void OrNeighbourhoods(const cv::Mat& bits, cv::Mat* out) {
+// neighbours along each row, then of three such rows. `along` is scratch.
+void OrNeighbourhoods(const cv::Mat& bits, std::vector<uchar>* along_rows, cv::Mat* out) {
   const int rows = bits.rows, cols = bits.cols;
-  std::vector<uchar> along((rows + 2) * static_cast<size_t>(cols), 0);  // A zero row each end.
+  const size_t stride = static_cast<size_t>(cols);
+  // A zero row each end; every other byte is written below.
+  along_rows->resize((rows + 2) * stride);
+  uchar* along = along_rows->data();
+  std::fill(along, along + stride, 0);
+  std::fill(along + (rows + 1) * stride, along + (rows + 2) * stride, 0);
   for (int r = 0; r < rows; ++r) {
     const uchar* b = bits.ptr<uchar>(r);
-    uchar* h = along.data() + (r + 1) * static_cast<size_t>(cols);
+    uchar* h = along + (r + 1) * stride;
     h[0] = static_cast<uchar>(b[0] | (cols > 1 ? b[1] : 0));
-    for (int u = 1; u + 1 < cols; ++u) h[u] = static_cast<uchar>(b[u - 1] | b[u] | b[u + 1]);
+    OrAcross(b, cols, h);
     if (cols > 1) h[cols - 1] = static_cast<uchar>(b[cols - 2] | b[cols - 1]);
   }
   for (int r = 0; r < rows; ++r) {
-    const uchar* above = along.data() + r * static_cast<size_t>(cols);
-    const uchar* centre = above + cols;
-    const uchar* below = centre + cols;
+    const uchar* above = along + r * stride;
+    const uchar* centre = above + stride;
+    const uchar* below = centre + stride;
     uchar* o = out->ptr<uchar>(r);
-    for (int u = 0; u < cols; ++u) o[u] = static_cast<uchar>(above[u] | centre[u] | below[u]);
+    int u = 0;
+#ifdef __SSE2__
+    for (; u + 16 <= cols; u += 16) {
+      const __m128i a = _mm_loadu_si128(reinterpret_cast<const __m128i*>(above + u));
+      const __m128i c = _mm_loadu_si128(reinterpret_cast<const __m128i*>(centre + u));
+      const __m128i b = _mm_loadu_si128(reinterpret_cast<const __m128i*>(below + u));
+      _mm_storeu_si128(reinterpret_cast<__m128i*>(o + u), _mm_or_si128(_mm_or_si128(a, c), b));
+    }
+#endif
+    for (; u < cols; ++u) o[u] = static_cast<uchar>(above[u] | centre[u] | below[u]);
   }
 }
 
@@ -118,31 +153,49 @@ OrientedEdges ComputeOrientedEdges(const cv::Mat& bgr, int top, int bottom, Imag
     if (!ColorCannyEdges(bgr, from, to, &dx, &dy, &edges)) return out;  // Not 8-bit: no edges.
   }
   const cv::Rect band(0, top - from, bgr.cols, bottom - top);
-  out.edges = edges(band).clone();
-  // Each edge pixel's orientation bit, OR-ed over its 3x3 neighbourhood.
-  cv::Mat bits = cv::Mat::zeros(band.size(), CV_8U);
-  ForEachEdgePixel(out.edges, [&](int u, int r) {
-    const int row = r + band.y;
-    bits.at<uchar>(r, u) =
-        static_cast<uchar>(1u << OrientationBin(dx.at<short>(row, u), dy.at<short>(row, u)));
-  });
+  // A view of the band: the edges are not written again (a cache refilled later gets new
+  // buffers, so this one stays as it is).
+  out.edges = edges(band);
+  // Each edge pixel's orientation bit, OR-ed over its 3x3 neighbourhood. The scratch is the
+  // thread's, reused from search to search.
+  thread_local std::vector<uchar> thread_bits, thread_along;
+  std::vector<uchar>& bit_rows = thread_bits;
+  bit_rows.resize(static_cast<size_t>(band.area()));
+  cv::Mat bits(band.size(), CV_8U, bit_rows.data());
+  for (int r = 0; r < band.height; ++r) {  // Each row zeroed, then its edge pixels' bits.
+    uchar* b = bits.ptr<uchar>(r);
+    std::fill(b, b + band.width, 0);
+    const short* gx = dx.ptr<short>(r + band.y);
+    const short* gy = dy.ptr<short>(r + band.y);
+    ForEachNonZeroByte(out.edges.ptr<uchar>(r), 0, band.width, [&](int u) {
+      b[u] = static_cast<uchar>(1u << OrientationBin(gx[u], gy[u]));
+    });
+  }
   out.near.create(band.size(), CV_8U);
-  OrNeighbourhoods(bits, &out.near);
+  OrNeighbourhoods(bits, &thread_along, &out.near);
   return out;
 }
 
 LineHits OrientedLineHits(const cv::Point* line, int samples, const OrientedEdges& edges) {
   LineHits out;
-  const int rows = edges.near.rows;
-  const auto inside = [&](const cv::Point& p) {
-    return p.x >= 0 && p.x < edges.near.cols && p.y >= edges.top && p.y < edges.top + rows;
-  };
+  const int rows = edges.near.rows, cols = edges.near.cols;
+  // One pass over the samples: the visible ones' neighbourhood bits, in order (the orientation
+  // mask needs the visible ends first); then the hits among them.
+  constexpr int kOnStack = 256;
+  uchar stack_bits[kOnStack];
+  std::vector<uchar> heap_bits;
+  uchar* bits = stack_bits;
+  if (samples > kOnStack) {
+    heap_bits.resize(samples);
+    bits = heap_bits.data();
+  }
   int first = -1, last = -1, visible = 0;
   for (int i = 0; i < samples; ++i) {
-    if (!inside(line[i])) continue;
+    const int x = line[i].x, r = line[i].y - edges.top;
+    if (!(x >= 0 && x < cols && r >= 0 && r < rows)) continue;
     if (first < 0) first = i;
     last = i;
-    ++visible;
+    bits[visible++] = edges.near.ptr<uchar>(r)[x];
   }
   out.visible = visible;
   if (visible < 8) return out;
@@ -154,10 +207,7 @@ LineHits OrientedLineHits(const cv::Point* line, int samples, const OrientedEdge
     mask |= static_cast<uchar>(1u << ((bin + k + kOrientationBins) % kOrientationBins));
   }
   int hits = 0;
-  for (int i = first; i <= last; ++i) {
-    if (!inside(line[i])) continue;
-    hits += (edges.near.ptr<uchar>(line[i].y - edges.top)[line[i].x] & mask) != 0;
-  }
+  for (int i = 0; i < visible; ++i) hits += (bits[i] & mask) != 0;
   out.hits = hits;
   return out;
 }

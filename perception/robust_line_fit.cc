@@ -162,9 +162,11 @@ bool FitLineLeastDistance(const std::vector<Eigen::Vector2d>& points, Eigen::Vec
   if (points.size() < 8) return false;
   static const Passes passes = ChoosePasses();
   const Eigen::Vector2d anchor = points.front();
-  Columns c;
-  c.u.reserve(points.size());
-  c.v.reserve(points.size());
+  // The thread's columns, which keep their memory from call to call.
+  thread_local Columns thread_columns;
+  Columns& c = thread_columns;
+  c.u.clear();
+  c.v.clear();
   for (const auto& p : points) {
     c.u.push_back(p.x() - anchor.x());
     c.v.push_back(p.y() - anchor.y());

@@ -5,6 +5,11 @@
 #include <string>
 #include <vector>
 
+#ifdef __x86_64__
+#include <immintrin.h>
+#endif
+
+#include "core/cpu_features.h"
 #include "corridor_depth/corridor_frame.h"
 
 namespace corridor {
@@ -29,6 +34,44 @@ inline void SumSobel(const cv::Mat& bgr, int u, int v, int* gx, int* gy) {
   *gy = (s(r2) + 2 * s(r2 + 3) + s(r2 + 6)) - (s(r0) + 2 * s(r0 + 3) + s(r0 + 6));
 }
 
+#ifdef CORRIDOR_AVX2_VARIANTS
+// SumSobel with byte products: the nine bytes of each of the three rows against the Sobel
+// weights of their pixel (gx: -1 0 1 down the rows 1, 2, 1; gy: 1 2 1 on the row below less the
+// row above), summed in 16 then 32 bits: the same integers. Reads 16 bytes from each row's first
+// pixel, so only where that stays inside the image's data (else the scalar one).
+// `data`, `step` and `end` are bgr's first pixel, row step and data end, read once by the caller.
+__attribute__((target("avx2"))) inline void SumSobelAvx2(const cv::Mat& bgr, const uchar* data,
+                                                         size_t step, const uchar* end, int u,
+                                                         int v, int* gx, int* gy) {
+  const uchar* r1 = data + step * static_cast<size_t>(v) + 3 * (u - 1);
+  const uchar* r0 = r1 - step;
+  const uchar* r2 = r1 + step;
+  if (r2 + 16 > end) return SumSobel(bgr, u, v, gx, gy);
+  const __m128i wx = _mm_setr_epi8(-1, -1, -1, 0, 0, 0, 1, 1, 1, 0, 0, 0, 0, 0, 0, 0);
+  const __m128i wx2 = _mm_setr_epi8(-2, -2, -2, 0, 0, 0, 2, 2, 2, 0, 0, 0, 0, 0, 0, 0);
+  const __m128i wy = _mm_setr_epi8(1, 1, 1, 2, 2, 2, 1, 1, 1, 0, 0, 0, 0, 0, 0, 0);
+  const __m128i a = _mm_loadu_si128(reinterpret_cast<const __m128i*>(r0));
+  const __m128i b = _mm_loadu_si128(reinterpret_cast<const __m128i*>(r1));
+  const __m128i c = _mm_loadu_si128(reinterpret_cast<const __m128i*>(r2));
+  const __m128i x = _mm_add_epi16(_mm_add_epi16(_mm_maddubs_epi16(a, wx), _mm_maddubs_epi16(b, wx2)),
+                                  _mm_maddubs_epi16(c, wx));
+  const __m128i y = _mm_sub_epi16(_mm_maddubs_epi16(c, wy), _mm_maddubs_epi16(a, wy));
+  // Lanes 0-3: pairs of x, 4-7: pairs of y; then 32-bit sums, then x and y.
+  const __m128i pairs = _mm_madd_epi16(_mm_hadd_epi16(x, y), _mm_set1_epi16(1));
+  const __m128i sums = _mm_hadd_epi32(pairs, pairs);
+  *gx = _mm_cvtsi128_si32(sums);
+  *gy = _mm_extract_epi32(sums, 1);
+}
+#endif
+
+// std::lround(x) for |x| < 2^31, inlined: truncation, then the exact remainder decides (x less
+// its truncation is exact in double), half away from zero as lround rounds.
+inline int RoundHalfAway(double x) {
+  const int i = static_cast<int>(x);
+  const double rest = x - static_cast<double>(i);
+  return i + (rest >= 0.5) - (rest <= -0.5);
+}
+
 // The band from the point along `direction` (from 2 px on, its length): the fraction of it on an
 // edge running along `up` (within 1 px across, its gradient across `up` at least `threshold` and
 // twice its gradient along `up`), and its mean contrast across `up` (the largest within 1 px).
@@ -36,8 +79,8 @@ struct Run {
   double fraction = 0;
   double contrast = 0;
 };
-Run BandRun(const cv::Mat& bgr, const BandPoint& p, const Eigen::Vector2d& direction,
-            double threshold) {
+Run BandRunBaseline(const cv::Mat& bgr, const BandPoint& p, const Eigen::Vector2d& direction,
+                    double threshold) {
   const Eigen::Vector2d across(-p.up.y(), p.up.x());
   int on = 0, n = 0;
   double contrast = 0;
@@ -46,8 +89,8 @@ Run BandRun(const cv::Mat& bgr, const BandPoint& p, const Eigen::Vector2d& direc
     double best = 0;
     bool edge = false;
     for (int d = -1; d <= 1; ++d) {
-      const int u = static_cast<int>(std::lround(q.x() + d * across.x()));
-      const int v = static_cast<int>(std::lround(q.y() + d * across.y()));
+      const int u = RoundHalfAway(q.x() + d * across.x());
+      const int v = RoundHalfAway(q.y() + d * across.y());
       if (u < 1 || v < 1 || u >= bgr.cols - 1 || v >= bgr.rows - 1) continue;
       int gx = 0, gy = 0;
       SumSobel(bgr, u, v, &gx, &gy);
@@ -62,6 +105,82 @@ Run BandRun(const cv::Mat& bgr, const BandPoint& p, const Eigen::Vector2d& direc
   Run run;
   if (n > 0) run.fraction = static_cast<double>(on) / n, run.contrast = contrast / n;
   return run;
+}
+
+#ifdef CORRIDOR_AVX2_VARIANTS
+// RoundHalfAway of four doubles: truncation, the exact remainder, then the whole step.
+__attribute__((target("avx2"))) inline __m128i RoundHalfAwayAvx2(__m256d x) {
+  const __m256d t = _mm256_round_pd(x, _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC);
+  const __m256d rest = _mm256_sub_pd(x, t);
+  const __m256d one = _mm256_set1_pd(1.0);
+  const __m256d up = _mm256_and_pd(_mm256_cmp_pd(rest, _mm256_set1_pd(0.5), _CMP_GE_OQ), one);
+  const __m256d down =
+      _mm256_and_pd(_mm256_cmp_pd(rest, _mm256_set1_pd(-0.5), _CMP_LE_OQ), one);
+  return _mm256_cvttpd_epi32(_mm256_sub_pd(_mm256_add_pd(t, up), down));
+}
+
+// The same band with the three points across (d = -1, 0, 1) in the lanes of AVX2 registers:
+// the same products and sums (no FMA), RoundHalfAway's rounding (truncation, then the exact
+// remainder), SumSobelAvx2's integers. A point outside the image counts as a zero gradient,
+// which changes neither the largest contrast (>= 0) nor the edge test (threshold > 0).
+__attribute__((target("avx2"))) Run BandRunAvx2(const cv::Mat& bgr, const BandPoint& p,
+                                                const Eigen::Vector2d& direction,
+                                                double threshold) {
+  const Eigen::Vector2d across(-p.up.y(), p.up.x());
+  const __m256d steps = _mm256_setr_pd(-1.0, 0.0, 1.0, 0.0);
+  const __m256d step_x = _mm256_mul_pd(steps, _mm256_set1_pd(across.x()));
+  const __m256d step_y = _mm256_mul_pd(steps, _mm256_set1_pd(across.y()));
+  const __m256d ax = _mm256_set1_pd(across.x()), ay = _mm256_set1_pd(across.y());
+  const __m256d ux = _mm256_set1_pd(p.up.x()), uy = _mm256_set1_pd(p.up.y());
+  const __m256d two = _mm256_set1_pd(2.0);
+  const __m256d sign = _mm256_set1_pd(-0.0), limit = _mm256_set1_pd(threshold);
+  const int max_u = bgr.cols - 2, max_v = bgr.rows - 2;
+  const uchar* data = bgr.data;
+  const uchar* end = bgr.dataend;
+  const size_t step = bgr.step[0];
+  int on = 0, n = 0;
+  double contrast = 0;
+  for (double k = 2; k <= p.length; k += 1, ++n) {
+    const Eigen::Vector2d q = p.pixel + k * direction;
+    alignas(16) int us[4], vs[4];
+    _mm_store_si128(reinterpret_cast<__m128i*>(us),
+                    RoundHalfAwayAvx2(_mm256_add_pd(_mm256_set1_pd(q.x()), step_x)));
+    _mm_store_si128(reinterpret_cast<__m128i*>(vs),
+                    RoundHalfAwayAvx2(_mm256_add_pd(_mm256_set1_pd(q.y()), step_y)));
+    alignas(32) double gxs[4] = {0, 0, 0, 0}, gys[4] = {0, 0, 0, 0};
+    for (int d = 0; d < 3; ++d) {
+      const int u = us[d], v = vs[d];
+      if (u < 1 || v < 1 || u > max_u || v > max_v) continue;
+      int gx = 0, gy = 0;
+      SumSobelAvx2(bgr, data, step, end, u, v, &gx, &gy);
+      gxs[d] = gx;
+      gys[d] = gy;
+    }
+    const __m256d gx = _mm256_load_pd(gxs), gy = _mm256_load_pd(gys);
+    const __m256d g_across = _mm256_andnot_pd(
+        sign, _mm256_add_pd(_mm256_mul_pd(gx, ax), _mm256_mul_pd(gy, ay)));
+    const __m256d g_up = _mm256_andnot_pd(
+        sign, _mm256_add_pd(_mm256_mul_pd(gx, ux), _mm256_mul_pd(gy, uy)));
+    const __m256d is_edge = _mm256_and_pd(_mm256_cmp_pd(g_across, limit, _CMP_GE_OQ),
+                                          _mm256_cmp_pd(g_across, _mm256_mul_pd(two, g_up),
+                                                        _CMP_GE_OQ));
+    on += _mm256_movemask_pd(is_edge) != 0;
+    alignas(32) double g[4];
+    _mm256_store_pd(g, g_across);
+    contrast += std::max(std::max(g[0], g[1]), g[2]);
+  }
+  Run run;
+  if (n > 0) run.fraction = static_cast<double>(on) / n, run.contrast = contrast / n;
+  return run;
+}
+#endif
+
+Run BandRun(const cv::Mat& bgr, const BandPoint& p, const Eigen::Vector2d& direction,
+            double threshold) {
+#ifdef CORRIDOR_AVX2_VARIANTS
+  if (CpuHasAvx2()) return BandRunAvx2(bgr, p, direction, threshold);
+#endif
+  return BandRunBaseline(bgr, p, direction, threshold);
 }
 
 }  // namespace

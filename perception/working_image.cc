@@ -40,7 +40,7 @@ __attribute__((target("avx2"))) void PyrDownAvx2(const cv::Mat& src, cv::Mat* ds
     const uint8_t* r2 = src.ptr<uint8_t>(2 * y);
     const uint8_t* r3 = src.ptr<uint8_t>(Reflect101(2 * y + 1, height));
     const uint8_t* r4 = src.ptr<uint8_t>(Reflect101(2 * y + 2, height));
-    binomial::ColumnSums5(r0, r1, r2, r3, r4, n, v);
+    binomial::ColumnSums5Avx2(r0, r1, r2, r3, r4, n, v);
     binomial::ReflectEnds<C>(v, width, 2);
     binomial::RowSums5<C>(v, n, h);
     uint8_t* d = out.ptr<uint8_t>(y);

@@ -105,6 +105,41 @@ TEST(ColorGradientTest, FloatImagesTakeTheOpenCvPath) {
   EXPECT_EQ(histogram.size(), static_cast<size_t>(kGradientBins));
 }
 
+// With a floor F the bins from F on are the reference's (from cv::Sobel per channel), bin F - 1
+// holds every smaller value, the ones below it nothing; so every percentile at least F is the
+// reference's and the smaller ones come out as F - 1. Widths with and without vector tails.
+TEST(ColorGradientTest, HistogramWithAFloor) {
+  for (const int cols : {7, 8, 37, 70}) {
+    const cv::Mat image = RandomImage(13, cols, CV_8UC3, 20 + cols);
+    cv::Mat ref_dx, ref_dy;
+    ReferenceGradient(image, &ref_dx, &ref_dy);
+    std::vector<int> reference(kGradientBins, 0);
+    for (int r = 0; r < image.rows; ++r) {
+      for (int u = 0; u < image.cols; ++u) {
+        ++reference[std::abs(ref_dx.at<short>(r, u)) + std::abs(ref_dy.at<short>(r, u))];
+      }
+    }
+    for (const int floor : {1, 40, 400, 900}) {
+      cv::Mat dx, dy;
+      std::vector<int> histogram;
+      ColorGradient(image, &dx, &dy, &histogram, floor);
+      ASSERT_EQ(histogram.size(), static_cast<size_t>(kGradientBins));
+      int below = 0;
+      for (int m = 0; m < floor; ++m) below += reference[m];
+      for (int m = 0; m + 1 < floor; ++m) EXPECT_EQ(histogram[m], 0) << cols << " " << floor;
+      EXPECT_EQ(histogram[floor - 1], below) << cols << " " << floor;
+      for (int m = floor; m < kGradientBins; ++m) {
+        EXPECT_EQ(histogram[m], reference[m]) << cols << " " << floor << " " << m;
+      }
+      const double total = static_cast<double>(image.total());
+      for (const double p : {10.0, 50.0, 90.0, 99.0}) {
+        const double exact = HistogramPercentile(reference, total, p);
+        EXPECT_EQ(HistogramPercentile(histogram, total, p), exact >= floor ? exact : floor - 1);
+      }
+    }
+  }
+}
+
 TEST(ColorGradientTest, HistogramPercentile) {
   std::vector<int> histogram(kGradientBins, 0);
   histogram[10] = 50;

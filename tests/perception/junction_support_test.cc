@@ -70,6 +70,22 @@ TEST(RefineJunctionTest, FitsThePointsOnItsFloorSideAndMeasuresTheirExtent) {
   EXPECT_NEAR(RefineJunction(candidate, edges, vp, true, 2.0, 480).confidence, 0.6, 1e-12);
 }
 
+TEST(RefineJunctionTest, ALineThatMovesFarFromTheCandidateStillGetsAllItsPixels) {
+  // 501 points on the line from u = 100 to 600; the candidate leaves it from u = 100 on, 6 px
+  // lower at u = 300 (15 px at u = 600). The first round (within 4 px of the candidate) takes the
+  // points up to about u = 250, whose fit is the line itself; the next rounds must find all 501
+  // on it, including those far from the candidate (u > ~550, more than 12 px from it).
+  std::vector<Eigen::Vector2d> edges;
+  for (int u = 100; u <= 600; ++u) edges.push_back(OnLine(u));
+  JunctionCandidate candidate{LineThrough(OnLine(100), OnLine(300) + Eigen::Vector2d(0, 6)),
+                              1.0};
+  const JunctionLine line = RefineJunction(candidate, edges, OnLine(700), true, 2.0, 2000);
+  ASSERT_EQ(line.support.size(), 501u);
+  for (int u : {100, 350, 600}) EXPECT_NEAR(line.line.dot(OnLine(u).homogeneous()), 0, 1e-9);
+  EXPECT_NEAR((line.near_end - OnLine(100)).norm(), 0, 1e-9);
+  EXPECT_NEAR((line.far_end - OnLine(600)).norm(), 0, 1e-9);
+}
+
 TEST(RefineJunctionTest, TooFewSupportPixelsKeepTheCandidatesEnds) {
   // Five points on the candidate's line: too few to fit (FitLineLeastDistance needs 8) or to
   // measure an extent; the line and the ends stay the candidate's.
