@@ -153,9 +153,9 @@ OrientedEdges ComputeOrientedEdges(const cv::Mat& bgr, int top, int bottom, Imag
     if (!ColorCannyEdges(bgr, from, to, &dx, &dy, &edges)) return out;  // Not 8-bit: no edges.
   }
   const cv::Rect band(0, top - from, bgr.cols, bottom - top);
-  // A view of the band: the edges are not written again (a cache refilled later gets new
-  // buffers, so this one stays as it is).
-  out.edges = edges(band);
+  // A copy of the band: the result stays valid when the cache is filled again (cv::Mat::create
+  // keeps a buffer of the same size, which a view would share).
+  out.edges = edges(band).clone();
   // Each edge pixel's orientation bit, OR-ed over its 3x3 neighbourhood. The scratch is the
   // thread's, reused from search to search.
   thread_local std::vector<uchar> thread_bits, thread_along;
