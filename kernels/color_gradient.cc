@@ -111,10 +111,12 @@ __attribute__((target("avx2"))) void ChannelsRowAvx2(const uchar* const* above,
 ChannelsRowFn ChooseChannelsRow(int n) {
 #ifdef CORRIDOR_AVX2_VARIANTS
   if (CpuHasAvx2()) {
-    return n == 2 ? ChannelsRowAvx2<2> : n == 3 ? ChannelsRowAvx2<3> : ChannelsRowAvx2<4>;
+    return n == 2 ? ChannelsRowAvx2<2> : n == 3 ? ChannelsRowAvx2<3>
+                                                : ChannelsRowAvx2<4>;
   }
 #endif
-  return n == 2 ? ChannelsRow<2> : n == 3 ? ChannelsRow<3> : ChannelsRow<4>;
+  return n == 2 ? ChannelsRow<2> : n == 3 ? ChannelsRow<3>
+                                          : ChannelsRow<4>;
 }
 
 // Splits one row of 8-bit pixels of n channels (2 to 4) into n planar rows.

@@ -75,7 +75,7 @@ JunctionLine RefineJunction(const JunctionCandidate& candidate,
   std::vector<Eigen::Vector2d> support;
   std::vector<Eigen::Vector2d>& fitted = scratch.fitted;  // The pixels `line` was fitted to.
   fitted.clear();
-  bool final_support = false;                    // True once `support` is the final (distance, line) support.
+  bool final_support = false;  // True once `support` is the final (distance, line) support.
   // The side's pixels within 2 distance + kSlack of the candidate: a support of a line that moved
   // less than the rest of that reach over the side's extent (|a' - a| max|u| + |b' - b| max|v| +
   // |c' - c|, a bound on how far any pixel's distance moved) has no pixel outside them, so it is
