@@ -1,5 +1,6 @@
 #include "pipeline/sequence_holds.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -14,8 +15,24 @@ bool MuchNarrower(const CorridorGeometry& previous, double max_change, const Cor
 void HoldWidth(const CorridorGeometry& previous, double max_change, CorridorGeometry* g,
                RecoverDepthResult* result) {
   if (!MuchNarrower(previous, max_change, *g)) return;
-  const bool keep_left = std::abs(g->LeftDistance() - previous.LeftDistance()) <=
-                         std::abs(g->RightDistance() - previous.RightDistance());
+  bool keep_left = std::abs(g->LeftDistance() - previous.LeftDistance()) <=
+                   std::abs(g->RightDistance() - previous.RightDistance());
+  // A wall put too near scales its side's ceiling height above the camera by the same factor:
+  // with a trusted ceiling carried and both sides' heights measured, the side whose height is
+  // nearer the trusted one has the right wall (the camera may have moved sideways since).
+  const double h = g->camera_height, trusted = previous.ceiling_height;
+  const double* side = result->ceiling.side_height;
+  const char* why = "moved less since the recent frames";
+  if (trusted > h && side[0] > h && side[1] > h) {
+    const double off_left = std::abs(std::log((side[0] - h) / (trusted - h)));
+    const double off_right = std::abs(std::log((side[1] - h) / (trusted - h)));
+    // Only a clear answer: one side off by what a wrong wall does, the other by under half that.
+    const double worse = std::max(off_left, off_right), better = std::min(off_left, off_right);
+    if (worse > std::log(1 + max_change) && better < 0.5 * worse) {
+      keep_left = off_left <= off_right;
+      why = "its ceiling agrees with the trusted one";
+    }
+  }
   const double kept = keep_left ? g->LeftDistance() : g->RightDistance();
   const double other = previous.width - kept;
   if (!(other > 0.05)) return;  // The kept wall is beyond the previous width: nothing to hold.
@@ -23,7 +40,7 @@ void HoldWidth(const CorridorGeometry& previous, double max_change, CorridorGeom
   how.precision(2);
   how << std::fixed << "width " << g->width << " m is much narrower than the recent frames' "
       << previous.width << " m: the " << (keep_left ? "left" : "right")
-      << " wall kept, the recent width held";
+      << " wall kept (" << why << "), the recent width held";
   g->offset = keep_left ? kept - 0.5 * previous.width : 0.5 * previous.width - kept;
   g->width = previous.width;
   result->width_held = true;

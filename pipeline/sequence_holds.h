@@ -14,8 +14,13 @@ namespace corridor {
 // an earlier mistake.
 bool MuchNarrower(const CorridorGeometry& previous, double max_change, const CorridorGeometry& g);
 
-// Holds such a width: the wall that moved less since the previous frame stays, and the other one
-// is put at the previous width from it (result->width_held).
+// Holds such a width: one wall stays and the other is put at the recent width from it
+// (result->width_held). The wall that stays is the one whose ceiling (result->ceiling's side
+// heights, each side searched alone) agrees with the trusted ceiling `previous` carries, when one
+// side's height above the camera is off from it by more than max_change (|log ratio|: a wall put
+// too near scales its side's height by the same factor) and the other by less than half as much.
+// Otherwise (no trusted ceiling, a side without a height, no clear answer), the wall that moved
+// less since the recent frames.
 void HoldWidth(const CorridorGeometry& previous, double max_change, CorridorGeometry* g,
                RecoverDepthResult* result);
 

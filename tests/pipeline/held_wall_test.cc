@@ -1,0 +1,60 @@
+// Which wall a held width keeps: the one whose ceiling, searched on its side alone, agrees with
+// the trusted ceiling carried by the sequence; without both sides' heights, the one that moved
+// less since the recent frames. Geometry worked out by hand: camera 0.5 m high, ceiling 2.5 m,
+// walls 1.0 m either side; this frame puts its left wall at 0.6 m (a line inside the floor), so
+// that side's ceiling comes out at 0.5 + 2.0 * 0.6 / 1.0 = 1.7 m, 0.51 (|log ratio|) off.
+#include <gtest/gtest.h>
+
+#include "pipeline/sequence_holds.h"
+
+namespace corridor {
+namespace {
+
+struct Held {
+  CorridorGeometry geometry;
+  RecoverDepthResult result;
+};
+
+Held HoldWithSideHeights(double left_height, double right_height) {
+  CorridorGeometry previous;  // The recent width and trusted ceiling; the camera was 0.35 m left.
+  previous.camera_height = 0.5;
+  previous.ceiling_height = 2.5;
+  previous.SetWallDistances(0.65, 1.35);
+  Held held;
+  held.geometry.camera_height = 0.5;
+  held.geometry.SetWallDistances(0.6, 1.0);  // 1.6 m: much narrower than 2.0 m.
+  held.result.ceiling.side_height[0] = left_height;
+  held.result.ceiling.side_height[1] = right_height;
+  HoldWidth(previous, 0.15, &held.geometry, &held.result);
+  return held;
+}
+
+TEST(HeldWallTest, TheWallWhoseCeilingAgreesIsKept) {
+  const Held held = HoldWithSideHeights(1.7, 2.5);
+  ASSERT_TRUE(held.result.width_held);
+  EXPECT_DOUBLE_EQ(held.geometry.width, 2.0);
+  EXPECT_DOUBLE_EQ(held.geometry.RightDistance(), 1.0);
+  EXPECT_NEAR(held.geometry.LeftDistance(), 1.0, 1e-12);
+  EXPECT_NE(held.result.fallback.find("right wall kept"), std::string::npos)
+      << held.result.fallback;
+}
+
+TEST(HeldWallTest, WithoutBothSidesTheWallThatMovedLessIsKept) {
+  // The left wall moved 0.05 m since the recent frames, the right one 0.35 m.
+  const Held held = HoldWithSideHeights(0.0, 2.5);
+  ASSERT_TRUE(held.result.width_held);
+  EXPECT_DOUBLE_EQ(held.geometry.width, 2.0);
+  EXPECT_NEAR(held.geometry.LeftDistance(), 0.6, 1e-12);
+  EXPECT_NE(held.result.fallback.find("left wall kept"), std::string::npos)
+      << held.result.fallback;
+}
+
+TEST(HeldWallTest, SidesThatBothNearlyAgreeLeaveItToTheWallThatMovedLess) {
+  // 2.4 m and 2.6 m: 5% below and above the trusted 2.0 m above the camera, neither a wrong wall.
+  const Held held = HoldWithSideHeights(2.4, 2.6);
+  ASSERT_TRUE(held.result.width_held);
+  EXPECT_NEAR(held.geometry.LeftDistance(), 0.6, 1e-12);
+}
+
+}  // namespace
+}  // namespace corridor
