@@ -1,6 +1,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "corridor_depth/corridor_geometry.h"
@@ -18,11 +19,17 @@ namespace corridor {
 // it: the corridor may really have narrowed, or the held width (the trusted ceiling) was the
 // wrong one.
 // Its ceiling height is the last one whose two sides agreed (RecoverDepthResult::ceiling_trusted),
-// or none: only such a height is held over a frame whose sides disagree.
+// or none: only such a height is held over a frame whose sides disagree. But when at least
+// kRecentCeilings of the recent frames' own heights (measured, not held) have a median above the
+// camera more than kCeilingOutvoted (|log ratio|) from it, that median is carried instead: one
+// frame whose two sides agreed on a wrong line (window bands' tops on both walls) is outvoted by
+// the frames around it.
 class SequencePrior {
  public:
   static constexpr int kMaxHeld = 3;
   static constexpr int kRecentWidths = 5;
+  static constexpr int kRecentCeilings = 3;
+  static constexpr double kCeilingOutvoted = 0.15;
 
   // The geometry to pass to DepthRecoverer::Reconstruct as `previous`; null for none.
   const CorridorGeometry* Previous() const {
@@ -33,9 +40,20 @@ class SequencePrior {
   void Update(const RecoverDepthResult& result) {
     if (!result.status.ok() || !result.has_geometry) return;
     // Before the first frame previous_ is default-constructed: no ceiling (0).
-    const double trusted = result.ceiling_trusted || result.ceiling_held
-                               ? result.geometry.ceiling_height
-                               : previous_.ceiling_height;
+    double trusted = result.ceiling_trusted || result.ceiling_held
+                         ? result.geometry.ceiling_height
+                         : previous_.ceiling_height;
+    if (result.ceiling.found && !result.ceiling_held) {
+      if (ceilings_.size() == kRecentWidths) ceilings_.erase(ceilings_.begin());
+      ceilings_.push_back(result.ceiling.height);
+    }
+    const double h = result.geometry.camera_height;
+    if (trusted > h && static_cast<int>(ceilings_.size()) >= kRecentCeilings) {
+      const double recent = Median(ceilings_);
+      if (recent > h && std::abs(std::log((recent - h) / (trusted - h))) > kCeilingOutvoted) {
+        trusted = recent;
+      }
+    }
     const bool let_go = has_previous_ && held_ >= kMaxHeld;
     previous_ = result.geometry;
     previous_.ceiling_height = trusted;
@@ -46,19 +64,19 @@ class SequencePrior {
       if (widths_.size() == kRecentWidths) widths_.erase(widths_.begin());
       widths_.push_back(result.geometry.width);
     }
-    if (!widths_.empty()) previous_.width = MedianWidth();
+    if (!widths_.empty()) previous_.width = Median(widths_);
   }
 
  private:
-  // The median of the recent widths (the lower middle one of an even count).
-  double MedianWidth() const {
-    std::vector<double> sorted = widths_;
-    std::sort(sorted.begin(), sorted.end());
-    return sorted[(sorted.size() - 1) / 2];
+  // The median (the lower middle one of an even count) of a non-empty list.
+  static double Median(std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    return values[(values.size() - 1) / 2];
   }
 
   CorridorGeometry previous_;
-  std::vector<double> widths_;  // The last measured (not held) widths, oldest first.
+  std::vector<double> widths_;    // The last measured (not held) widths, oldest first.
+  std::vector<double> ceilings_;  // The last measured (not held) ceiling heights, oldest first.
   bool has_previous_ = false;
   int held_ = 0;  // Frames in a row whose width was held or walls scaled.
 };

@@ -58,5 +58,38 @@ TEST(SequencePriorTest, ALetGoWidthStartsTheRecentWidthsAgain) {
   EXPECT_DOUBLE_EQ(prior.Previous()->width, 2.0);  // Not the median with the 3.0s.
 }
 
+// A frame with its own ceiling measurement (found), trusted or not.
+RecoverDepthResult CeilingFrame(double height, bool trusted) {
+  RecoverDepthResult r = Frame(2.0);
+  r.geometry.camera_height = 0.5;
+  r.geometry.ceiling_height = height;
+  r.ceiling.found = true;
+  r.ceiling.height = height;
+  r.ceiling_trusted = trusted;
+  return r;
+}
+
+TEST(SequencePriorTest, OneTrustedCeilingThatTheRecentFramesOutvoteIsNotCarried) {
+  SequencePrior prior;
+  for (int i = 0; i < 3; ++i) prior.Update(CeilingFrame(2.5, /*trusted=*/false));
+  EXPECT_EQ(prior.Previous()->ceiling_height, 0.0);  // Nothing trusted yet: nothing carried.
+  // Both sides agree on a window band's top, 1.9 m: 1.4 m above the camera against 2.0 m.
+  prior.Update(CeilingFrame(1.9, /*trusted=*/true));
+  // The recent heights {2.5, 2.5, 2.5, 1.9}: their median 2.5 is |log(2.0 / 1.4)| = 0.36 away.
+  EXPECT_DOUBLE_EQ(prior.Previous()->ceiling_height, 2.5);
+}
+
+TEST(SequencePriorTest, ATrustedCeilingTheRecentFramesAgreeWithIsCarried) {
+  SequencePrior prior;
+  prior.Update(CeilingFrame(2.6, false));
+  prior.Update(CeilingFrame(2.8, false));
+  prior.Update(CeilingFrame(2.7, true));
+  // {2.6, 2.8, 2.7}: median 2.7, the trusted one.
+  EXPECT_DOUBLE_EQ(prior.Previous()->ceiling_height, 2.7);
+  prior.Update(CeilingFrame(2.3, false));  // Untrusted: 2.7 stays ({2.3, 2.6, 2.7, 2.8} -> 2.6,
+                                           // |log(2.1 / 2.2)| = 0.05 away).
+  EXPECT_DOUBLE_EQ(prior.Previous()->ceiling_height, 2.7);
+}
+
 }  // namespace
 }  // namespace corridor
