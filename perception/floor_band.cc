@@ -4,27 +4,9 @@
 #include <cmath>
 
 #include "kernels/edge_scan.h"
+#include "perception/line_side_span.h"
 
 namespace corridor {
-namespace {
-
-// Narrows [lo, hi) (columns, u = scale * column) to where sign * line . (u, v, 1) > margin.
-void KeepSide(const Eigen::Vector3d& line, double sign, double v, double margin, int scale,
-              double* lo, double* hi) {
-  const double a = sign * line.x(), rest = sign * (line.y() * v + line.z()) - margin;
-  if (a == 0) {
-    if (!(rest > 0)) *hi = *lo;
-    return;
-  }
-  const double bound = -rest / a / scale;
-  if (a > 0) {
-    *lo = std::max(*lo, std::floor(bound) + 1);
-  } else {
-    *hi = std::min(*hi, std::ceil(bound));
-  }
-}
-
-}  // namespace
 
 BandEdges MeasureBandEdges(const cv::Mat& edges, const cv::Mat& dx, const cv::Mat& dy,
                            const GradientGrid& grid, const Eigen::Vector3d& inner,
@@ -42,8 +24,8 @@ BandEdges MeasureBandEdges(const cv::Mat& edges, const cv::Mat& dx, const cv::Ma
     const double v = grid.first_row + static_cast<double>(grid.scale) * j;
     if (!(v > vanishing_point.y() + margin)) continue;
     double lo = 0, hi = edges.cols;
-    KeepSide(inner, -1.0, v, margin, grid.scale, &lo, &hi);  // Above the inner line.
-    KeepSide(outer, 1.0, v, margin, grid.scale, &lo, &hi);   // Below the outer line.
+    KeepLineSide(inner, -1.0, v, margin, grid.scale, &lo, &hi);  // Above the inner line.
+    KeepLineSide(outer, 1.0, v, margin, grid.scale, &lo, &hi);   // Below the outer line.
     if (!(lo < hi)) continue;
     const int begin = static_cast<int>(lo), end = static_cast<int>(hi);
     out.pixels += end - begin;

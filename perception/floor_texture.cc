@@ -11,26 +11,10 @@
 #endif
 
 #include "kernels/edge_scan.h"
+#include "perception/line_side_span.h"
 
 namespace corridor {
 namespace {
-
-// Narrows [lo, hi) (columns of the gradient map) to the u where line . (u, v, 1) > margin, with
-// u = scale * column.
-void KeepBelow(const Eigen::Vector3d& line, double v, double margin, int scale, double* lo,
-               double* hi) {
-  const double a = line.x(), rest = line.y() * v + line.z() - margin;  // a u + rest > 0.
-  if (a == 0) {
-    if (!(rest > 0)) *hi = *lo;
-    return;
-  }
-  const double bound = -rest / a / scale;  // The column where the line is `margin` above.
-  if (a > 0) {
-    *lo = std::max(*lo, std::floor(bound) + 1);
-  } else {
-    *hi = std::min(*hi, std::ceil(bound));
-  }
-}
 
 // True when the edge through (u, v) with gradient (gx, gy) runs within the tolerance of
 // horizontal, of vertical, or of the direction to the vanishing point.
@@ -61,8 +45,8 @@ FloorTexture MeasureFloorTexture(const cv::Mat& dx, const cv::Mat& dy, const Gra
     const double v = grid.first_row + static_cast<double>(grid.scale) * j;
     if (!(v > vanishing_point.y() + margin)) continue;
     double lo = 0, hi = dx.cols;
-    KeepBelow(left, v, margin, grid.scale, &lo, &hi);
-    KeepBelow(right, v, margin, grid.scale, &lo, &hi);
+    KeepLineSide(left, 1.0, v, margin, grid.scale, &lo, &hi);
+    KeepLineSide(right, 1.0, v, margin, grid.scale, &lo, &hi);
     if (!(lo < hi)) continue;
     const int begin = static_cast<int>(lo), end = static_cast<int>(hi);
     const short* gx = dx.ptr<short>(j);
