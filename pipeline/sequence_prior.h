@@ -10,7 +10,7 @@
 namespace corridor {
 
 // What a sequence carries from frame to frame: the last good geometry, with the width of the
-// recent frames: the median of the last kRecentWidths widths that were measured, not held. It
+// recent frames: the median of the last kRecent widths that were measured, not held. It
 // stands in when one junction is hidden and is held when the next width is much narrower
 // (RecoverDepthOptions::max_width_change). The median, because one frame's wrong wide width (a
 // line beyond the wall taken for a junction) would otherwise be held over the right frames after
@@ -20,15 +20,15 @@ namespace corridor {
 // wrong one.
 // Its ceiling height is the last one whose two sides agreed (RecoverDepthResult::ceiling_trusted),
 // or none: only such a height is held over a frame whose sides disagree. But when at least
-// kRecentCeilings of the recent frames' own heights (measured, not held) have a median above the
+// kMinRecentCeilings of the last kRecent frames' own heights (measured, not held) have a median above the
 // camera more than kCeilingOutvoted (|log ratio|) from it, that median is carried instead: one
 // frame whose two sides agreed on a wrong line (window bands' tops on both walls) is outvoted by
 // the frames around it.
 class SequencePrior {
  public:
   static constexpr int kMaxHeld = 3;
-  static constexpr int kRecentWidths = 5;
-  static constexpr int kRecentCeilings = 3;
+  static constexpr int kRecent = 5;
+  static constexpr int kMinRecentCeilings = 3;
   static constexpr double kCeilingOutvoted = 0.15;
 
   // The geometry to pass to DepthRecoverer::Reconstruct as `previous`; null for none.
@@ -43,12 +43,9 @@ class SequencePrior {
     double trusted = result.ceiling_trusted || result.ceiling_held
                          ? result.geometry.ceiling_height
                          : previous_.ceiling_height;
-    if (result.ceiling.found && !result.ceiling_held) {
-      if (ceilings_.size() == kRecentWidths) ceilings_.erase(ceilings_.begin());
-      ceilings_.push_back(result.ceiling.height);
-    }
+    if (result.ceiling.found && !result.ceiling_held) PushRecent(result.ceiling.height, &ceilings_);
     const double h = result.geometry.camera_height;
-    if (trusted > h && static_cast<int>(ceilings_.size()) >= kRecentCeilings) {
+    if (trusted > h && static_cast<int>(ceilings_.size()) >= kMinRecentCeilings) {
       const double recent = Median(ceilings_);
       if (recent > h && std::abs(std::log((recent - h) / (trusted - h))) > kCeilingOutvoted) {
         trusted = recent;
@@ -60,14 +57,17 @@ class SequencePrior {
     has_previous_ = true;
     held_ = result.width_held || result.walls_scaled ? held_ + 1 : 0;
     if (let_go) widths_.clear();
-    if (!result.width_held && !result.walls_scaled) {
-      if (widths_.size() == kRecentWidths) widths_.erase(widths_.begin());
-      widths_.push_back(result.geometry.width);
-    }
+    if (!result.width_held && !result.walls_scaled) PushRecent(result.geometry.width, &widths_);
     if (!widths_.empty()) previous_.width = Median(widths_);
   }
 
  private:
+  // Appends `value`, dropping the oldest beyond kRecent.
+  static void PushRecent(double value, std::vector<double>* recent) {
+    if (recent->size() == kRecent) recent->erase(recent->begin());
+    recent->push_back(value);
+  }
+
   // The median (the lower middle one of an even count) of a non-empty list.
   static double Median(std::vector<double> values) {
     std::sort(values.begin(), values.end());
