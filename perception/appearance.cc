@@ -69,6 +69,37 @@ FloorAppearance AppearanceOf(const std::vector<cv::Vec3b>& patch) {
   return floor;
 }
 
+// Floor-likeness of a mean Lab colour: a Gaussian of its distance to the floor's colour, as wide
+// as the floor's own texture allows.
+double Likeness(const cv::Vec3f& lab, const FloorAppearance& floor) {
+  const double sigma = std::max(6.0, 3.0 * floor.spread);
+  const double d = LabDistance(lab, floor.lab);
+  return std::exp(-d * d / (2 * sigma * sigma));
+}
+
+// The 3x3 patches (pixels `scale` apart, 9 per usable sample) centred `offset` times `scale` px
+// from 24 points along `line`: below it for offset > 0, above for offset < 0.
+std::vector<cv::Vec3b> StripPatches(const cv::Mat& bgr, const MergedLine& line, int roi_top,
+                                    int scale, double offset) {
+  const Eigen::Vector2d normal = line.line.head<2>();  // Points down (toward the floor).
+  const int samples = 24;
+  const int spacing = std::max(1, scale);
+  std::vector<cv::Vec3b> patches;
+  patches.reserve(samples * 9);
+  for (int i = 0; i < samples; ++i) {
+    const Eigen::Vector2d p = line.start + (line.end - line.start) * ((i + 0.5) / samples);
+    const Eigen::Vector2d q = p + offset * spacing * normal;
+    const int u = cvRound(q.x()), v = cvRound(q.y()) - roi_top;
+    if (u < spacing || v < spacing || u >= bgr.cols - spacing || v >= bgr.rows - spacing) continue;
+    for (int dv = -spacing; dv <= spacing; dv += spacing) {
+      for (int du = -spacing; du <= spacing; du += spacing) {
+        patches.push_back(bgr.at<cv::Vec3b>(v + dv, u + du));
+      }
+    }
+  }
+  return patches;
+}
+
 }  // namespace
 
 float LabDistance(const cv::Vec3f& a, const cv::Vec3f& b) {
@@ -105,22 +136,7 @@ FloorAppearance SampleFloor(const cv::Mat& bgr, int roi_top, int step) {
 
 FloorAppearance SampleBelowLine(const cv::Mat& bgr, const MergedLine& line, int roi_top,
                                 int scale) {
-  const Eigen::Vector2d normal = line.line.head<2>();  // Points down (toward the floor).
-  const int samples = 24;
-  const int spacing = std::max(1, scale);
-  std::vector<cv::Vec3b> patch;
-  for (int i = 0; i < samples; ++i) {
-    const Eigen::Vector2d p = line.start + (line.end - line.start) * ((i + 0.5) / samples);
-    const Eigen::Vector2d below = p + 4.0 * spacing * normal;
-    const int u = cvRound(below.x()), v = cvRound(below.y()) - roi_top;
-    if (u < spacing || v < spacing || u >= bgr.cols - spacing || v >= bgr.rows - spacing) continue;
-    for (int dv = -spacing; dv <= spacing; dv += spacing) {
-      for (int du = -spacing; du <= spacing; du += spacing) {
-        patch.push_back(bgr.at<cv::Vec3b>(v + dv, u + du));
-      }
-    }
-  }
-  return AppearanceOf(patch);
+  return AppearanceOf(StripPatches(bgr, line, roi_top, scale, 4.0));
 }
 
 double BoundaryScore(const cv::Mat& bgr, const FloorAppearance& floor, const MergedLine& line,
@@ -153,11 +169,6 @@ double BoundaryScore(const cv::Mat& bgr, const FloorAppearance& floor, const Mer
   // Floor-likeness of each strip, per sample, so that a few samples on grout, a box or a door
   // do not decide: the junction has floor just below and something else above. (A baseboard top
   // has baseboard below; a grout line or a reflection has floor on both sides.)
-  const double sigma = std::max(6.0, 3.0 * floor.spread);
-  const auto likeness = [&](const cv::Vec3f& c) {
-    const double d = LabDistance(c, floor.lab);
-    return std::exp(-d * d / (2 * sigma * sigma));
-  };
   double sum = 0;
   const int count = static_cast<int>(lab.size() / 18);
   for (int s = 0; s < count; ++s) {
@@ -167,9 +178,22 @@ double BoundaryScore(const cv::Mat& bgr, const FloorAppearance& floor, const Mer
       ca += cv::Vec3f(lab[18 * s + k]);
       cb += cv::Vec3f(lab[18 * s + 9 + k]);
     }
-    sum += likeness(cb / 9.0f) * (1.0 - likeness(ca / 9.0f));
+    sum += Likeness(cb / 9.0f, floor) * (1.0 - Likeness(ca / 9.0f, floor));
   }
   return count > 0 ? sum / count : 0.0;
+}
+
+double FloorLikenessAbove(const cv::Mat& bgr, const FloorAppearance& floor,
+                          const MergedLine& line, int roi_top, int scale) {
+  const std::vector<cv::Vec3b> lab = BgrToLab(StripPatches(bgr, line, roi_top, scale, -4.0));
+  const size_t count = lab.size() / 9;
+  double sum = 0;
+  for (size_t s = 0; s < count; ++s) {
+    cv::Vec3f mean(0, 0, 0);
+    for (size_t k = 0; k < 9; ++k) mean += cv::Vec3f(lab[9 * s + k]);
+    sum += Likeness(mean / 9.0f, floor);
+  }
+  return count > 0 ? sum / static_cast<double>(count) : 0.0;
 }
 
 double BandContrast(const cv::Mat& bgr, const FloorAppearance& floor, const MergedLine& upper,

@@ -45,6 +45,13 @@ FloorAppearance SampleBelowLine(const cv::Mat& bgr, const MergedLine& line, int 
 double BoundaryScore(const cv::Mat& bgr, const FloorAppearance& floor, const MergedLine& line,
                      int roi_top, int scale = 1);
 
+// How much the strip 4 `scale` px above `line` looks like `floor`, in [0, 1]: the mean, over
+// samples along the line, of the floor-likeness BoundaryScore gives a strip (1 for the floor's
+// own colour). High above a stripe painted on the floor (the floor goes on beyond it); low above
+// the junction. `bgr` and `scale` as for BoundaryScore; 0 when no sample is inside.
+double FloorLikenessAbove(const cv::Mat& bgr, const FloorAppearance& floor,
+                          const MergedLine& line, int roi_top, int scale = 1);
+
 // How unlike the floor just below `lower` the band between `upper` and `lower` looks: two lines
 // through one vanishing point on the same side, `upper` above (on the wall side of) `lower`. The
 // median, over samples along their common extent where the band is at least 4 `scale` px tall,

@@ -63,6 +63,8 @@ bool JunctionDetectorOptions::Check(std::string* why) const {
     reason = "inclination bounds must lie in [0, 90] degrees";
   } else if (floor_band_min_across < 0) {
     reason = "floor_band_min_across must be >= 0 (0 = off)";
+  } else if (!(stripe_floor_likeness >= 0 && stripe_floor_likeness <= 1)) {
+    reason = "stripe_floor_likeness must be in [0, 1] (0 = off)";
   } else if (!(support_distance_px > 0)) {
     reason = "support_distance_px must be positive";
   } else if (!(baseboard_band_contrast >= 0 && baseboard_band_contrast <= 1e6)) {
@@ -242,8 +244,8 @@ PairSearch SearchPair(const cv::Mat& color, const JunctionSearchRegion& region,
   cues.roi_top = region.roi_top;
   cues.scale = region.scale;
   const BaseboardBandTest band = MakeBandTest(options, cues);
-  if (options.floor_band_min_across > 0) {
-    cues.floor_band.min_across = options.floor_band_min_across;
+  cues.floor_band.min_across = options.floor_band_min_across;
+  if (options.floor_band_min_across > 0 || options.stripe_floor_likeness > 0) {
     BandEdgeOptions band_options;
     band_options.margin = 3.0 * region.scale;  // Clear of the lines' own edges (the 5x5 reach).
     const GradientGrid grid = SearchRegionGrid(region);
@@ -256,6 +258,14 @@ PairSearch SearchPair(const cv::Mat& color, const JunctionSearchRegion& region,
     cues.floor_band.boundary = [&cues](const MergedLine& outer) {
       return BoundaryScore(cues.roi, SampleBelowLine(cues.roi, outer, cues.roi_top, cues.scale),
                            outer, cues.roi_top, cues.scale);
+    };
+  }
+  if (options.stripe_floor_likeness > 0) {
+    cues.floor_band.stripe_min_beyond = options.stripe_floor_likeness;
+    cues.floor_band.floor_above = [&cues](const MergedLine& inner, const MergedLine& line) {
+      return FloorLikenessAbove(cues.roi,
+                                SampleBelowLine(cues.roi, inner, cues.roi_top, cues.scale), line,
+                                cues.roi_top, cues.scale);
     };
   }
   const Eigen::Vector2d size(width, height);

@@ -133,6 +133,7 @@ bool IsFloorBand(const BandEdges& band, const FloorBandTest& test) {
 // beside a runner); the nearest, because the band up to a baseboard's top is floor too.
 void ApplyFloorRule(const Eigen::Vector2d& vp, const FloorBandTest& test,
                     std::vector<JunctionCandidate>* candidates, int* chosen, int* inner_index) {
+  if (test.min_across <= 0) return;
   const std::vector<JunctionCandidate>& side = *candidates;
   const int first = *chosen;
   for (int step = 0; step < kMaxFloorSteps; ++step) {
@@ -158,6 +159,37 @@ void ApplyFloorRule(const Eigen::Vector2d& vp, const FloorBandTest& test,
   if (test.boundary) {
     double& boundary = (*candidates)[*chosen].boundary;
     boundary = std::max(boundary, test.boundary(side[*chosen].line));
+  }
+}
+
+// The stripe rule on one side (see FloorBandTest::floor_above). The lines above the chosen one
+// (through the same vanishing point) are taken nearest first, by the size of their band with it;
+// the first with floor above it is the stripe's far edge, the line after it the junction. The
+// chosen line must itself show little floor above it: a junction as light as the floor, or a
+// grout line, has floor-like colour on both sides and says nothing. A line that replaces the
+// chosen one leaves no lower partner (the baseboard rule's was below the stripe) and records the
+// replaced line as the inner one, unless the floor rule did.
+void ApplyStripeRule(const Eigen::Vector2d& vp, const FloorBandTest& test,
+                     const std::vector<JunctionCandidate>& side, int* chosen, int* inner_index,
+                     int* lower) {
+  const MergedLine& inner = side[*chosen].line;
+  if (test.floor_above(inner, inner) > test.stripe_max_inner) return;
+  const Eigen::Vector2d low = inner.start.y() > inner.end.y() ? inner.start : inner.end;
+  std::vector<std::pair<long, int>> above;  // (band pixels, candidate index)
+  for (size_t k = 0; k < side.size(); ++k) {
+    const MergedLine& outer = side[k].line;
+    if (static_cast<int>(k) == *chosen || !PassesThrough(outer, vp)) continue;
+    if (!(outer.line.dot(low.homogeneous()) > 0)) continue;  // Not above the chosen line.
+    above.emplace_back(test.measure(inner, outer, vp).pixels, static_cast<int>(k));
+  }
+  std::sort(above.begin(), above.end());
+  for (size_t i = 0; i + 1 < above.size(); ++i) {
+    if (test.floor_above(inner, side[above[i].second].line) >= test.stripe_min_beyond) {
+      if (*inner_index < 0) *inner_index = *chosen;
+      *chosen = above[i + 1].second;
+      *lower = -1;
+      return;
+    }
   }
 }
 
@@ -216,6 +248,12 @@ SelectedPair SelectJunctionPair(std::vector<JunctionCandidate>* left_candidates,
   if (best.left >= 0) {
     ApplyBaseboardRule(left, best.vanishing_point, true, band, &best.left, &best.left_lower);
     ApplyBaseboardRule(right, best.vanishing_point, false, band, &best.right, &best.right_lower);
+  }
+  if (best.left >= 0 && floor_band.measure && floor_band.floor_above) {
+    ApplyStripeRule(best.vanishing_point, floor_band, left, &best.left, &best.left_inner,
+                    &best.left_lower);
+    ApplyStripeRule(best.vanishing_point, floor_band, right, &best.right, &best.right_inner,
+                    &best.right_lower);
   }
   return best;
 }

@@ -26,7 +26,8 @@ struct SelectedPair {
   // that the baseboard rule did not take: the junction if the chosen line is a baseboard top, or
   // a recess's floor line, after all. -1 when there is none. Another cue (the ceiling) decides.
   int left_lower = -1, right_lower = -1;
-  // Per side, the line the pair chose when the floor rule replaced it by one above; -1 otherwise.
+  // Per side, the line the pair chose when the floor or stripe rule replaced it by one above; -1
+  // otherwise.
   int left_inner = -1, right_inner = -1;
 };
 
@@ -55,6 +56,14 @@ struct FloorBandTest {
   long min_across = 20;             // At least this many edge pixels across the corridor...
   int min_across_rows = 4;          // ... on at least this many rows (joints recur down a floor)...
   double max_vertical_ratio = 0.1;  // ... and at most this many vertical ones per across one.
+                                    // 0 min_across: no floor rule (the stripe rule may still run).
+  // The stripe rule: how much the strip just above `line` looks like the floor just below `inner`
+  // (FloorLikenessAbove against SampleBelowLine); empty: no stripe rule. A stripe, a border or a
+  // runner's edge painted or laid beside the wall has floor beyond it; the junction has wall.
+  std::function<double(const MergedLine& inner, const MergedLine& line)> floor_above;
+  double stripe_max_inner = 0.35;  // The chosen line shows at most this much floor above it...
+  double stripe_min_beyond = 0.7;  // ... and a line above it at least this much: the floor goes
+                                   // on beyond that line, and the next line above bounds it.
 };
 
 // Scores every (left, right) pair: both lines' support lengths and boundary scores, plus the
@@ -64,8 +73,10 @@ struct FloorBandTest {
 // Then, per side, the baseboard rule: a lower partner of the chosen line becomes the junction when
 // its boundary score nearly matches the chosen line's, or when `band` finds the band between them
 // unlike the floor (a baseboard whose lower edge has little contrast with the floor). Before it,
-// the floor rule (`floor_band`): the farthest line above the chosen one whose band is floor
+// the floor rule (`floor_band`): the nearest line above the chosen one whose band is floor
 // becomes the chosen line, its boundary score the higher of the two (`floor_band.boundary`).
+// After both, the stripe rule (`floor_band.floor_above`): when the floor goes on above a line
+// beyond the chosen one, the next line above that one becomes the chosen line.
 SelectedPair SelectJunctionPair(std::vector<JunctionCandidate>* left,
                                 std::vector<JunctionCandidate>* right,
                                 const std::vector<MergedLine>& all_lines,

@@ -34,6 +34,7 @@ DECLARE_double(baseboard_band_contrast);
 DECLARE_double(roi_top);
 DECLARE_double(max_floor_texture);
 DECLARE_int32(floor_band_min_across);
+DECLARE_double(stripe_floor_likeness);
 DECLARE_double(hough_angle_window);
 DECLARE_int32(relaxed_hough_threshold);
 DECLARE_string(sequence);

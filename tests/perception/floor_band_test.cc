@@ -1,7 +1,7 @@
-// The floor rule's measures: MeasureBandEdges on edge pixels placed by hand (which class each
-// falls in is worked out here from its gradient and position), SampleBelowLine on a two-colour
-// image, and the rule on generated corridors with a carpet runner or floor stripes, against the
-// generator's junction lines.
+// The floor and stripe rules' measures: MeasureBandEdges on edge pixels placed by hand (which
+// class each falls in is worked out here from its gradient and position), SampleBelowLine and
+// FloorLikenessAbove on a two-colour image, and the rules on generated corridors with a carpet
+// runner or floor stripes, against the generator's junction lines.
 #include "perception/floor_band.h"
 
 #include <cmath>
@@ -123,6 +123,36 @@ TEST(SampleBelowLineTest, GivesTheColourBelowTheLine) {
   EXPECT_EQ(floor.spread, 1.0f);
 }
 
+TEST(FloorLikenessAboveTest, IsOneForTheFloorsColourAndTheGaussianOfItsDistanceElse) {
+  // Grey-blue above the line v = 0.5 u + 40, brown below it.
+  cv::Mat bgr(200, 200, CV_8UC3);
+  const cv::Vec3b above(180, 150, 140), below(40, 90, 150);
+  for (int v = 0; v < bgr.rows; ++v) {
+    for (int u = 0; u < bgr.cols; ++u) bgr.at<cv::Vec3b>(v, u) = v > 0.5 * u + 40 ? below : above;
+  }
+  MergedLine line;
+  line.line = DownLine({0, 40}, {200, 140});
+  line.start = {10, 45};
+  line.end = {190, 135};
+  // Each colour's Lab value, converted here pixel by pixel.
+  const auto lab_of = [](const cv::Vec3b& c) {
+    cv::Mat lab;
+    cv::cvtColor(cv::Mat(1, 1, CV_8UC3, cv::Scalar(c[0], c[1], c[2])), lab, cv::COLOR_BGR2Lab);
+    return cv::Vec3f(lab.at<cv::Vec3b>(0, 0));
+  };
+  FloorAppearance brown, grey;
+  brown.lab = lab_of(below);
+  grey.lab = lab_of(above);
+  // Uniform floors: spread 1, so the likeness is exp(-d^2 / (2 * 6^2)) with d the Lab distance
+  // (lightness weighted a quarter: 0.0385 on the squared 8-bit L).
+  const cv::Vec3f d = grey.lab - brown.lab;
+  const double distance = std::sqrt(0.0385 * d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  ASSERT_GT(distance, 12.0);  // The premise: two clearly different colours.
+  EXPECT_NEAR(FloorLikenessAbove(bgr, grey, line, 0, 1), 1.0, 1e-6);
+  EXPECT_NEAR(FloorLikenessAbove(bgr, brown, line, 0, 1),
+              std::exp(-distance * distance / (2 * 36.0)), 1e-6);
+}
+
 // Frame `index` of scene `scene` of the real-buildings floor class, as the preset renders it, and
 // the largest distance, px, of either found junction's support ends from the true line (the
 // generator's scene projected by hand); NaN when no pair is found.
@@ -163,6 +193,33 @@ TEST(FloorRuleTest, TakesTheJunctionsBeyondACarpetRunner) {
                 scene, index, with_rule, without_rule);
     EXPECT_GT(without_rule, 20.0) << scene << "/" << index;  // The premise: a runner edge.
     EXPECT_LT(with_rule, 3.0) << scene << "/" << index;
+  }
+}
+
+// Dark stripes painted 0.1-0.5 m from each wall on a tiled floor (scenes 8 and 9): a stripe's
+// inner edge looks like the floor's boundary (dark above it) and the tile joints beyond it are
+// too few for the floor rule; beyond the stripe's far edge the floor goes on, so the stripe rule
+// takes the next line above, the junction.
+TEST(StripeRuleTest, TakesTheJunctionsBeyondAFloorStripe) {
+  JunctionDetectorOptions without;
+  without.stripe_floor_likeness = 0;
+  for (const auto& [scene, index] : {std::pair{8, 2}, {8, 3}, {9, 3}}) {
+    const double with_rule = WorstJunctionOffsetPx(scene, index, JunctionDetectorOptions());
+    const double without_rule = WorstJunctionOffsetPx(scene, index, without);
+    std::printf("scene %d frame %d: junctions within %.1f px with the rule, %.1f px without\n",
+                scene, index, with_rule, without_rule);
+    EXPECT_GT(without_rule, 20.0) << scene << "/" << index;  // The premise: a stripe's edge.
+    EXPECT_LT(with_rule, 3.0) << scene << "/" << index;
+  }
+}
+
+TEST(StripeRuleTest, BadOptionIsRejected) {
+  for (const double likeness : {-0.1, 1.5}) {
+    JunctionDetectorOptions options;
+    options.stripe_floor_likeness = likeness;
+    std::string why;
+    EXPECT_FALSE(options.Check(&why));
+    EXPECT_NE(why.find("stripe_floor_likeness"), std::string::npos) << why;
   }
 }
 
