@@ -20,6 +20,14 @@ BandEdges MeasureBandEdges(const cv::Mat& edges, const cv::Mat& dx, const cv::Ma
   const double tan_tolerance = std::tan(options.tolerance_deg * M_PI / 180.0);
   const double sin_vp = std::sin(options.vp_tolerance_deg * M_PI / 180.0);
   const double margin = options.margin;
+  // True when the edge at map column i, image row v, with gradient (gx, gy) runs toward the
+  // vanishing point: the edge runs along (-gy, gx), the vanishing point lies along (tx, ty).
+  const auto toward_vp = [&](double gx, double gy, double ax, double ay, int i, double v) {
+    const double u = static_cast<double>(grid.scale) * i;
+    const double tx = vanishing_point.x() - u, ty = vanishing_point.y() - v;
+    const double cross = -gy * ty - gx * tx;
+    return std::abs(cross) <= sin_vp * std::hypot(ax, ay) * std::hypot(tx, ty);
+  };
   for (int j = 0; j < edges.rows; ++j) {
     const double v = grid.first_row + static_cast<double>(grid.scale) * j;
     if (!(v > vanishing_point.y() + margin)) continue;
@@ -38,13 +46,12 @@ BandEdges MeasureBandEdges(const cv::Mat& edges, const cv::Mat& dx, const cv::Ma
         ++out.vertical;
         return;
       }
-      if (ax > tan_tolerance * ay) return;  // Neither across nor vertical.
-      const double u = static_cast<double>(grid.scale) * i;
-      // The edge runs along (-gy, gx); the vanishing point lies along (tx, ty).
-      const double tx = vanishing_point.x() - u, ty = vanishing_point.y() - v;
-      const double cross = -gy[i] * ty - gx[i] * tx;
-      if (std::abs(cross) <= sin_vp * std::hypot(ax, ay) * std::hypot(tx, ty)) return;
-      ++out.across;
+      const bool along = toward_vp(gx[i], gy[i], ax, ay, i, v);
+      if (ax > tan_tolerance * ay) {  // Neither across nor vertical.
+        if (!along) ++out.oblique;
+        return;
+      }
+      if (!along) ++out.across;
     });
     if (out.across > across_before) ++out.across_rows;
   }

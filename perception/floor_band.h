@@ -24,6 +24,8 @@ struct BandEdges {
   int across_rows = 0;  // Gradient-map rows with at least one of them: a floor's joints recur
                         // down the band, a box's front edges are one or two rows.
   long vertical = 0;    // Edge pixels standing vertical.
+  long oblique = 0;     // Edge pixels neither across, vertical nor toward the vanishing point: a
+                        // carpet's texture has edges in every direction, most of them oblique.
 };
 
 // The band above `inner` and below `outer` (normals pointing down, as MergedLine), below the

@@ -63,6 +63,8 @@ bool JunctionDetectorOptions::Check(std::string* why) const {
     reason = "inclination bounds must lie in [0, 90] degrees";
   } else if (floor_band_min_across < 0) {
     reason = "floor_band_min_across must be >= 0 (0 = off)";
+  } else if (!(floor_band_texture_density >= 0 && floor_band_texture_density <= 1)) {
+    reason = "floor_band_texture_density must be in [0, 1] (0 = off)";
   } else if (!(stripe_floor_likeness >= 0 && stripe_floor_likeness <= 1)) {
     reason = "stripe_floor_likeness must be in [0, 1] (0 = off)";
   } else if (!(support_distance_px > 0)) {
@@ -245,6 +247,7 @@ PairSearch SearchPair(const cv::Mat& color, const JunctionSearchRegion& region,
   cues.scale = region.scale;
   const BaseboardBandTest band = MakeBandTest(options, cues);
   cues.floor_band.min_across = options.floor_band_min_across;
+  cues.floor_band.min_texture_density = options.floor_band_texture_density;
   if (options.floor_band_min_across > 0 || options.stripe_floor_likeness > 0) {
     BandEdgeOptions band_options;
     band_options.margin = 3.0 * region.scale;  // Clear of the lines' own edges (the 5x5 reach).

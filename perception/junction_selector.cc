@@ -124,8 +124,17 @@ constexpr int kMaxFloorSteps = 3;
 
 // True when `band`'s edges say floor (see FloorBandTest).
 bool IsFloorBand(const BandEdges& band, const FloorBandTest& test) {
-  return band.across >= test.min_across && band.across_rows >= test.min_across_rows &&
-         band.vertical <= test.max_vertical_ratio * static_cast<double>(band.across);
+  if (band.across_rows < test.min_across_rows) return false;
+  if (band.across >= test.min_across &&
+      band.vertical <= test.max_vertical_ratio * static_cast<double>(band.across)) {
+    return true;  // Joints across the corridor.
+  }
+  const double edges = static_cast<double>(band.across + band.vertical + band.oblique);
+  const double oblique = static_cast<double>(band.oblique);
+  return test.min_texture_density > 0 && band.pixels > 0 &&
+         edges >= test.min_texture_density * static_cast<double>(band.pixels) &&
+         oblique >= test.min_oblique_ratio * static_cast<double>(band.vertical) &&
+         oblique >= test.min_oblique_ratio * static_cast<double>(band.across);  // A carpet.
 }
 
 // The floor rule on one side: the nearest line above the chosen one (through the same vanishing

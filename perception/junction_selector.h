@@ -42,8 +42,9 @@ struct BaseboardBandTest {
 
 // The floor rule: the band between a side's chosen line and a line above it (on the wall side,
 // through the same vanishing point) is floor, not wall, when its edges run across the corridor
-// (tile joints reach the wall) and none stand vertical (a wall's door frames and corners do): the
-// chosen line is then a runner's or a stripe's edge inside the floor, and the line above bounds it.
+// (tile joints reach the wall) and none stand vertical (a wall's door frames and corners do), or
+// when it has a carpet's texture: the chosen line is then a runner's or a stripe's edge inside the
+// floor, and the line above bounds it.
 struct FloorBandTest {
   // The band's edges (MeasureBandEdges); empty: no floor rule.
   std::function<BandEdges(const MergedLine& inner, const MergedLine& outer,
@@ -57,6 +58,11 @@ struct FloorBandTest {
   int min_across_rows = 4;          // ... on at least this many rows (joints recur down a floor)...
   double max_vertical_ratio = 0.1;  // ... and at most this many vertical ones per across one.
                                     // 0 min_across: no floor rule (the stripe rule may still run).
+  // Or the band is a textured floor (carpet): edges in every direction, so mostly oblique ones
+  // (an isotropic texture has about three times as many as vertical or across ones; a wall's
+  // edges stand vertical or run along the corridor), on at least min_across_rows rows.
+  double min_texture_density = 0.05;  // Edge pixels per band pixel, at least; 0: no texture test.
+  double min_oblique_ratio = 3.0;     // Oblique edge pixels per vertical and per across one.
   // The stripe rule: how much the strip just above `line` looks like the floor just below `inner`
   // (FloorLikenessAbove against SampleBelowLine); empty: no stripe rule. A stripe, a border or a
   // runner's edge painted or laid beside the wall has floor beyond it; the junction has wall.

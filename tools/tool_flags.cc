@@ -87,6 +87,10 @@ DEFINE_int32(floor_band_min_across, 20,
              "A chosen junction with a line above it, where the floor between them shows at least "
              "this many edge pixels across the corridor (tile joints) and few vertical ones, is a "
              "runner's or stripe's edge: the line above is the junction; 0 = off");
+DEFINE_double(floor_band_texture_density, 0.05,
+              "Also floor for that rule: a band with at least this many edge pixels per pixel, "
+              "three times as many oblique ones as vertical or across ones (a carpet's texture "
+              "beside a runner); 0 = off");
 DEFINE_double(stripe_floor_likeness, 0.7,
               "A chosen junction with a line above it that has the floor's colour beyond it (at "
               "least this alike, in [0, 1]) is a stripe's or border's edge: the next line above "
@@ -117,6 +121,7 @@ Status RecoverDepthOptionsFromFlags(RecoverDepthOptions* options) {
   options->perception.max_floor_texture = FLAGS_max_floor_texture;
   options->perception.floor_band_min_across = FLAGS_floor_band_min_across;
   options->perception.stripe_floor_likeness = FLAGS_stripe_floor_likeness;
+  options->perception.floor_band_texture_density = FLAGS_floor_band_texture_density;
   options->perception.hough_angle_window_deg = FLAGS_hough_angle_window;
   options->perception.relaxed_hough_threshold = FLAGS_relaxed_hough_threshold;
   options->min_confidence = FLAGS_min_confidence;

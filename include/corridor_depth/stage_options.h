@@ -31,6 +31,7 @@ struct JunctionDetectorOptions {
   double max_inclination_deg = 80;                  // Scene prior: steepest junction, degrees from horizontal (the paper: 90 - atan(H/W), set -1).
   double baseboard_band_contrast = 1.45;            // A lower line parallel to the chosen one is the junction (the chosen one a baseboard top) when the band between them is this unlike the floor below, in floor spreads (BandContrast); raise it for glossy floors that mirror the baseboard; 0 = off.
   int floor_band_min_across = 20;                   // The chosen junction is a line inside the floor (a runner's or stripe's edge) and a line above it the junction when the band between them has at least this many edge pixels across the corridor (tile joints), few vertical ones (FloorBandTest); 0 = off.
+  double floor_band_texture_density = 0.05;         // ... or, for the floor rule, a textured floor (carpet): at least this many edge pixels per band pixel, three times as many oblique ones as vertical or across ones; 0 = off.
   double stripe_floor_likeness = 0.7;               // The chosen junction is a stripe's or border's edge when a line above it has floor at least this alike (FloorLikenessAbove, in [0, 1]) beyond it: the next line above is the junction (FloorBandTest::floor_above); 0 = off.
   double support_distance_px = 2.0;                 // Edge pixels this close to a chosen line support its refit.
   double max_edge_density = 0.2;                    // More edge pixels than this fraction of the ROI: noise or texture, not a corridor.
