@@ -95,10 +95,11 @@ int OrientationBin(int gx, int gy) {
 }
 
 bool ColorCannyEdges(const cv::Mat& bgr, int from, int to, cv::Mat* dx, cv::Mat* dy,
-                     cv::Mat* edges) {
-  cv::Mat smooth;
-  if (!BinomialBlur(bgr, from, to, 5, &smooth).ok()) return false;
-  ColorGradient(smooth, dx, dy, nullptr);
+                     cv::Mat* edges, cv::Mat* smooth) {
+  cv::Mat own;
+  cv::Mat& blurred = smooth != nullptr ? *smooth : own;
+  if (!BinomialBlur(bgr, from, to, 5, &blurred).ok()) return false;
+  ColorGradient(blurred, dx, dy, nullptr);
   return CannyFromGradients(*dx, *dy, 20, 60, true, edges).ok();
 }
 
@@ -115,7 +116,7 @@ namespace {
 // The image's rows [0, to) into *out; false (and *out empty) as ColorCannyEdges.
 bool EdgesFromTop(const cv::Mat& bgr, int to, ImageEdges* out) {
   *out = ImageEdges();
-  if (bgr.empty() || !ColorCannyEdges(bgr, 0, to, &out->dx, &out->dy, &out->edges)) {
+  if (bgr.empty() || !ColorCannyEdges(bgr, 0, to, &out->dx, &out->dy, &out->edges, &out->smooth)) {
     *out = ImageEdges();
     return false;
   }
