@@ -68,15 +68,22 @@ class Accumulator {
         rows_start[n] = total - (lo - 1);  // Index of rho 0 in votes_.
         total += hi - lo + 3;
       }
-      votes_.assign(static_cast<size_t>(total), 0);
+      // Two bins more, never voted for: zeros for VoteAvx2's lanes past the window, and the
+      // upper half of the last bin's 32-bit read.
+      votes_.assign(static_cast<size_t>(total) + 2, 0);
       for (int i = 0; i < 3 * kAngles; ++i) row_[i] = rows_start[i % kAngles];
     }
   }
 
   // Adds a vote to the bins of the lines through (u, v) whose normals lie within the window of
-  // `bin`; returns the fullest of them, and its angle in *best_angle.
+  // `bin`; returns the fullest of them, and its angle in *best_angle (set only when the fullest
+  // holds at least `threshold` votes).
   template <bool kAvx2>
-  int Vote(int u, int v, int bin, int* best_angle) {
+  int Vote(int u, int v, int bin, int threshold, int* best_angle) {
+#ifdef CORRIDOR_AVX2_VARIANTS
+    if constexpr (kAvx2) return VoteAvx2(u, v, bin, threshold, best_angle);
+#endif
+    (void)threshold;
     const int first = Cells<kAvx2>(u, v, bin);
     int best = 0, best_k = 0;
     for (int k = 0; k <= 2 * window_; ++k) {
@@ -94,6 +101,7 @@ class Accumulator {
   template <bool kAvx2>
   void Unvote(int u, int v, int bin) {
     Cells<kAvx2>(u, v, bin);
+#pragma GCC unroll 4
     for (int k = 0; k <= 2 * window_; ++k) --votes_[cells_[k]];
   }
 
@@ -134,6 +142,38 @@ class Accumulator {
   }
 
 #ifdef CORRIDOR_AVX2_VARIANTS
+  // Vote with the bins' new counts read back eight at a time (a gather of the 32 bits at each
+  // bin: its count in the low half) and their maximum taken across the lanes; the first fullest
+  // bin is looked for only when it reaches the threshold. The same counts and the same answer.
+  __attribute__((target("avx2"))) int VoteAvx2(int u, int v, int bin, int threshold,
+                                               int* best_angle) {
+    const int first = Cells<true>(u, v, bin);
+    const int count = 2 * window_ + 1;
+#pragma GCC unroll 4
+    for (int k = 0; k < count; ++k) ++votes_[cells_[k]];
+    // Lanes past the window read the padding at the end of votes_, which holds zeros.
+    const int padding = static_cast<int>(votes_.size()) - 2;
+    for (int k = count; k < count + 7; ++k) cells_[k] = padding;
+    const int* counts = reinterpret_cast<const int*>(votes_.data());  // Read at 2-byte steps.
+    const __m256i low = _mm256_set1_epi32(0xffff);
+    __m256i most = _mm256_setzero_si256();
+    for (int k = 0; k < count; k += 8) {
+      const __m256i index = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(cells_ + k));
+      const __m256i pair = _mm256_i32gather_epi32(counts, index, 2);
+      most = _mm256_max_epi32(most, _mm256_and_si256(pair, low));
+    }
+    __m128i m = _mm_max_epi32(_mm256_castsi256_si128(most), _mm256_extracti128_si256(most, 1));
+    m = _mm_max_epi32(m, _mm_shuffle_epi32(m, _MM_SHUFFLE(1, 0, 3, 2)));
+    m = _mm_max_epi32(m, _mm_shuffle_epi32(m, _MM_SHUFFLE(2, 3, 0, 1)));
+    const int best = _mm_cvtsi128_si32(m);
+    if (best >= threshold) {
+      int k = 0;
+      while (votes_[cells_[k]] != best) ++k;  // The first fullest bin.
+      *best_angle = (first + k) % kAngles;
+    }
+    return best;
+  }
+
   // Eight angles at a time: the same float products, sum and rounding (the current rounding
   // mode, to nearest even, as the SSE2 and scalar ones). Returns the first angle not done.
   __attribute__((target("avx2"))) int CellsAvx2(float fu, float fv, int first, int count) {
@@ -156,7 +196,7 @@ class Accumulator {
   // Angle tables three times over, so that a window is contiguous wherever it wraps.
   float cos_[3 * kAngles], sin_[3 * kAngles];
   int row_[3 * kAngles] = {};  // Index of (angle, rho 0) in votes_.
-  int cells_[kAngles];         // The bins of the last Cells call.
+  int cells_[kAngles + 8];     // The bins of the last Cells call (and VoteAvx2's padding).
 };
 
 // Per-thread scratch of OrientedHoughSegments.
@@ -280,7 +320,7 @@ CORRIDOR_ALWAYS_INLINE inline void HoughBody(const cv::Mat& edges, const cv::Mat
     if (state.at<uchar>(p.y, p.x) != kWaiting) continue;  // Removed with a line meanwhile.
     state.at<uchar>(p.y, p.x) = kVoted;
     int angle = 0;
-    if (accumulator.Vote<kAvx2>(p.x, p.y, bins.at<uchar>(p.y, p.x), &angle) <
+    if (accumulator.Vote<kAvx2>(p.x, p.y, bins.at<uchar>(p.y, p.x), options.threshold, &angle) <
         options.threshold) {
       continue;
     }
