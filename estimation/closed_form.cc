@@ -16,8 +16,10 @@ namespace {
 // floor.
 bool MedianLateralPosition(const FloorIntrinsics& k, const CorridorRotation<double>& rotation,
                            const std::vector<Eigen::Vector2d>& points, double* median_x) {
-  std::vector<double> x;
-  x.reserve(points.size());
+  // The thread's, reused from call to call.
+  thread_local std::vector<double> thread_x;
+  std::vector<double>& x = thread_x;
+  x.clear();
   for (const auto& p : points) {
     Vec3<double> floor_point;
     if (!BackProjectToFloor(k, rotation, p.x(), p.y(), &floor_point)) return false;

@@ -53,8 +53,13 @@ __attribute__((target("avx2"))) void PyrDownAvx2(const cv::Mat& src, const cv::M
   const int out_width = (width + 1) / 2, out_height = (height + 1) / 2;
   cv::Mat out(out_height, out_width, src.type());
   // Two reflected pixels on each side of the vertical sums; four bytes of slack for the copy.
-  std::vector<uint16_t> vertical((width + 4) * C);
-  std::vector<uint8_t> horizontal(width * C + 4);
+  // The thread's, reused from call to call.
+  thread_local std::vector<uint16_t> thread_vertical;
+  thread_local std::vector<uint8_t> thread_horizontal;
+  std::vector<uint16_t>& vertical = thread_vertical;
+  std::vector<uint8_t>& horizontal = thread_horizontal;
+  vertical.resize(static_cast<size_t>(width + 4) * C);
+  horizontal.resize(static_cast<size_t>(width) * C + 4);
   uint16_t* v = vertical.data() + 2 * C;
   uint8_t* h = horizontal.data();
   const int n = width * C;
