@@ -22,7 +22,7 @@ namespace {
 // Every second pixel of a row of C-channel pixels: d[C x + c] = h[2 C x + c], x < out_width.
 template <int C>
 __attribute__((target("avx2"))) inline void EverySecondPixel(const uint8_t* h, int out_width,
-                                                               uint8_t* d) {
+                                                             uint8_t* d) {
   int x = 0;
   if (C == 3) {
     // Three pixels a step: bytes 0-2, 6-8 and 12-14 of 16 (every second pixel), stored as 16
