@@ -16,8 +16,10 @@ namespace {
 // floor.
 bool MedianLateralPosition(const FloorIntrinsics& k, const CorridorRotation<double>& rotation,
                            const std::vector<Eigen::Vector2d>& points, double* median_x) {
-  std::vector<double> x;
-  x.reserve(points.size());
+  // The thread's, reused from call to call.
+  thread_local std::vector<double> thread_x;
+  std::vector<double>& x = thread_x;
+  x.clear();
   for (const auto& p : points) {
     Vec3<double> floor_point;
     if (!BackProjectToFloor(k, rotation, p.x(), p.y(), &floor_point)) return false;
@@ -30,14 +32,13 @@ bool MedianLateralPosition(const FloorIntrinsics& k, const CorridorRotation<doub
 
 // The points that lie on their side's dominant line (LineInlierMask), so that gross outliers
 // neither tilt the fitted line nor shift the lateral positions.
-std::vector<Eigen::Vector2d> Inliers(const std::vector<Eigen::Vector2d>& points) {
+// Into *inliers, which keeps its memory.
+void Inliers(const std::vector<Eigen::Vector2d>& points, std::vector<Eigen::Vector2d>* inliers) {
   const std::vector<char> keep = LineInlierMask(points);
-  std::vector<Eigen::Vector2d> inliers;
-  inliers.reserve(points.size());
+  inliers->clear();
   for (size_t i = 0; i < points.size(); ++i) {
-    if (keep[i]) inliers.push_back(points[i]);
+    if (keep[i]) inliers->push_back(points[i]);
   }
-  return inliers;
 }
 
 }  // namespace
@@ -59,8 +60,12 @@ bool FitImageLine(const std::vector<Eigen::Vector2d>& points, Eigen::Vector3d* l
 Status SolveClosedForm(const CorridorObservation& observation, CorridorGeometry* geometry) {
   std::string why;
   if (!observation.Check(&why)) return Status::InvalidArgument(why);
-  const std::vector<Eigen::Vector2d> left = Inliers(observation.left);
-  const std::vector<Eigen::Vector2d> right = Inliers(observation.right);
+  // The thread's, reused from call to call.
+  thread_local std::vector<Eigen::Vector2d> thread_left, thread_right;
+  std::vector<Eigen::Vector2d>& left = thread_left;
+  std::vector<Eigen::Vector2d>& right = thread_right;
+  Inliers(observation.left, &left);
+  Inliers(observation.right, &right);
   Eigen::Vector3d left_line, right_line;
   if (!FitImageLine(left, &left_line) || !FitImageLine(right, &right_line)) {
     return Status::ImplausibleGeometry("a junction's points are all the same point");

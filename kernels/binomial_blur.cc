@@ -22,7 +22,10 @@ CORRIDOR_ALWAYS_INLINE inline void BlurBody(const cv::Mat& image, int from, int 
                                             binomial::Kernel5 k, cv::Mat* out) {
   constexpr int kPad = kTaps == 3 ? 1 : 2;
   const int width = image.cols, height = image.rows, n = width * C;
-  std::vector<uint16_t> sums((width + 2 * kPad) * C);
+  // The column sums of a row, with the reflected pixels each side: the thread's, reused.
+  thread_local std::vector<uint16_t> thread_sums;
+  std::vector<uint16_t>& sums = thread_sums;
+  sums.resize(static_cast<size_t>(width + 2 * kPad) * C);
   uint16_t* v = sums.data() + kPad * C;
   for (int y = from; y < to; ++y) {
     const auto row = [&](int dy) { return image.ptr<uint8_t>(Reflect101(y + dy, height)); };

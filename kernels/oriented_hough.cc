@@ -1,6 +1,7 @@
 #include "kernels/oriented_hough.h"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -68,15 +69,22 @@ class Accumulator {
         rows_start[n] = total - (lo - 1);  // Index of rho 0 in votes_.
         total += hi - lo + 3;
       }
-      votes_.assign(static_cast<size_t>(total), 0);
+      // Two bins more, never voted for: zeros for VoteAvx2's lanes past the window, and the
+      // upper half of the last bin's 32-bit read.
+      votes_.assign(static_cast<size_t>(total) + 2, 0);
       for (int i = 0; i < 3 * kAngles; ++i) row_[i] = rows_start[i % kAngles];
     }
   }
 
   // Adds a vote to the bins of the lines through (u, v) whose normals lie within the window of
-  // `bin`; returns the fullest of them, and its angle in *best_angle.
+  // `bin`; returns the fullest of them, and its angle in *best_angle (set only when the fullest
+  // holds at least `threshold` votes).
   template <bool kAvx2>
-  int Vote(int u, int v, int bin, int* best_angle) {
+  int Vote(int u, int v, int bin, int threshold, int* best_angle) {
+#ifdef CORRIDOR_AVX2_VARIANTS
+    if constexpr (kAvx2) return VoteAvx2(u, v, bin, threshold, best_angle);
+#endif
+    (void)threshold;
     const int first = Cells<kAvx2>(u, v, bin);
     int best = 0, best_k = 0;
     for (int k = 0; k <= 2 * window_; ++k) {
@@ -94,6 +102,7 @@ class Accumulator {
   template <bool kAvx2>
   void Unvote(int u, int v, int bin) {
     Cells<kAvx2>(u, v, bin);
+#pragma GCC unroll 4
     for (int k = 0; k <= 2 * window_; ++k) --votes_[cells_[k]];
   }
 
@@ -134,6 +143,38 @@ class Accumulator {
   }
 
 #ifdef CORRIDOR_AVX2_VARIANTS
+  // Vote with the bins' new counts read back eight at a time (a gather of the 32 bits at each
+  // bin: its count in the low half) and their maximum taken across the lanes; the first fullest
+  // bin is looked for only when it reaches the threshold. The same counts and the same answer.
+  __attribute__((target("avx2"))) int VoteAvx2(int u, int v, int bin, int threshold,
+                                               int* best_angle) {
+    const int first = Cells<true>(u, v, bin);
+    const int count = 2 * window_ + 1;
+#pragma GCC unroll 4
+    for (int k = 0; k < count; ++k) ++votes_[cells_[k]];
+    // Lanes past the window read the padding at the end of votes_, which holds zeros.
+    const int padding = static_cast<int>(votes_.size()) - 2;
+    for (int k = count; k < count + 7; ++k) cells_[k] = padding;
+    const int* counts = reinterpret_cast<const int*>(votes_.data());  // Read at 2-byte steps.
+    const __m256i low = _mm256_set1_epi32(0xffff);
+    __m256i most = _mm256_setzero_si256();
+    for (int k = 0; k < count; k += 8) {
+      const __m256i index = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(cells_ + k));
+      const __m256i pair = _mm256_i32gather_epi32(counts, index, 2);
+      most = _mm256_max_epi32(most, _mm256_and_si256(pair, low));
+    }
+    __m128i m = _mm_max_epi32(_mm256_castsi256_si128(most), _mm256_extracti128_si256(most, 1));
+    m = _mm_max_epi32(m, _mm_shuffle_epi32(m, _MM_SHUFFLE(1, 0, 3, 2)));
+    m = _mm_max_epi32(m, _mm_shuffle_epi32(m, _MM_SHUFFLE(2, 3, 0, 1)));
+    const int best = _mm_cvtsi128_si32(m);
+    if (best >= threshold) {
+      int k = 0;
+      while (votes_[cells_[k]] != best) ++k;  // The first fullest bin.
+      *best_angle = (first + k) % kAngles;
+    }
+    return best;
+  }
+
   // Eight angles at a time: the same float products, sum and rounding (the current rounding
   // mode, to nearest even, as the SSE2 and scalar ones). Returns the first angle not done.
   __attribute__((target("avx2"))) int CellsAvx2(float fu, float fv, int first, int count) {
@@ -156,7 +197,7 @@ class Accumulator {
   // Angle tables three times over, so that a window is contiguous wherever it wraps.
   float cos_[3 * kAngles], sin_[3 * kAngles];
   int row_[3 * kAngles] = {};  // Index of (angle, rho 0) in votes_.
-  int cells_[kAngles];         // The bins of the last Cells call.
+  int cells_[kAngles + 8];     // The bins of the last Cells call (and VoteAvx2's padding).
 };
 
 // Per-thread scratch of OrientedHoughSegments.
@@ -208,6 +249,89 @@ int GradientBin(short gx, short gy) {
   float degrees = FastAtan2(static_cast<float>(gy), static_cast<float>(gx));  // [0, 360).
   if (degrees >= 180.f) degrees -= 180.f;
   return cvRound(degrees) % kAngles;
+}
+
+#ifdef CORRIDOR_AVX2_VARIANTS
+// GradientBin of the pool's pixels eight at a time into *bins: FastAtan2's operations in the same
+// order in the lanes (no FMA; a division and selects where it branches), cvRound's rounding to
+// nearest even; the same bins. Returns the count done: the last pixel is left to the caller, as
+// its gradients' 32-bit reads could pass the end of dx and dy.
+__attribute__((target("avx2"))) size_t GradientBinsAvx2(const std::vector<cv::Point>& pool,
+                                                        const cv::Mat& dx, const cv::Mat& dy,
+                                                        cv::Mat* bins) {
+  const size_t n = pool.size();
+  if (n < 9) return 0;
+  constexpr float kDegrees = static_cast<float>(180 / M_PI);
+  const __m256 p1 = _mm256_set1_ps(0.9997878412794807f * kDegrees);
+  const __m256 p3 = _mm256_set1_ps(-0.3258083974640975f * kDegrees);
+  const __m256 p5 = _mm256_set1_ps(0.1555786518463281f * kDegrees);
+  const __m256 p7 = _mm256_set1_ps(-0.04432655554792128f * kDegrees);
+  const __m256 eps = _mm256_set1_ps(static_cast<float>(DBL_EPSILON));
+  const __m256 sign = _mm256_set1_ps(-0.0f), zero = _mm256_setzero_ps();
+  const __m256 d90 = _mm256_set1_ps(90.f), d180 = _mm256_set1_ps(180.f);
+  const __m256 d360 = _mm256_set1_ps(360.f);
+  const __m256i halves = _mm256_setr_epi32(0, 2, 4, 6, 1, 3, 5, 7);
+  const __m256i dx_step = _mm256_set1_epi32(static_cast<int>(dx.step[0] / sizeof(short)));
+  const __m256i dy_step = _mm256_set1_epi32(static_cast<int>(dy.step[0] / sizeof(short)));
+  const __m256i last_angle = _mm256_set1_epi32(kAngles - 1), angles = _mm256_set1_epi32(kAngles);
+  const int* dx_base = reinterpret_cast<const int*>(dx.data);
+  const int* dy_base = reinterpret_cast<const int*>(dy.data);
+  const int* points = reinterpret_cast<const int*>(pool.data());  // u, v pairs.
+  size_t i = 0;
+  for (; i + 8 < n; i += 8) {
+    const __m256i a = _mm256_permutevar8x32_epi32(
+        _mm256_loadu_si256(reinterpret_cast<const __m256i*>(points + 2 * i)), halves);
+    const __m256i b = _mm256_permutevar8x32_epi32(
+        _mm256_loadu_si256(reinterpret_cast<const __m256i*>(points + 2 * i + 8)), halves);
+    const __m256i us = _mm256_permute2x128_si256(a, b, 0x20);
+    const __m256i vs = _mm256_permute2x128_si256(a, b, 0x31);
+    // Each gradient is the low half of the 32 bits read at it (little-endian), sign-extended.
+    const __m256i gx32 = _mm256_i32gather_epi32(
+        dx_base, _mm256_add_epi32(_mm256_mullo_epi32(vs, dx_step), us), 2);
+    const __m256i gy32 = _mm256_i32gather_epi32(
+        dy_base, _mm256_add_epi32(_mm256_mullo_epi32(vs, dy_step), us), 2);
+    const __m256 x = _mm256_cvtepi32_ps(_mm256_srai_epi32(_mm256_slli_epi32(gx32, 16), 16));
+    const __m256 y = _mm256_cvtepi32_ps(_mm256_srai_epi32(_mm256_slli_epi32(gy32, 16), 16));
+    const __m256 ax = _mm256_andnot_ps(sign, x), ay = _mm256_andnot_ps(sign, y);
+    const __m256 wide = _mm256_cmp_ps(ax, ay, _CMP_GE_OQ);  // ax >= ay.
+    const __m256 c = _mm256_div_ps(_mm256_blendv_ps(ax, ay, wide),
+                                   _mm256_add_ps(_mm256_blendv_ps(ay, ax, wide), eps));
+    const __m256 c2 = _mm256_mul_ps(c, c);
+    __m256 poly = _mm256_add_ps(_mm256_mul_ps(p7, c2), p5);
+    poly = _mm256_add_ps(_mm256_mul_ps(poly, c2), p3);
+    poly = _mm256_add_ps(_mm256_mul_ps(poly, c2), p1);
+    poly = _mm256_mul_ps(poly, c);
+    __m256 deg = _mm256_blendv_ps(_mm256_sub_ps(d90, poly), poly, wide);
+    deg = _mm256_blendv_ps(deg, _mm256_sub_ps(d180, deg), _mm256_cmp_ps(x, zero, _CMP_LT_OQ));
+    deg = _mm256_blendv_ps(deg, _mm256_sub_ps(d360, deg), _mm256_cmp_ps(y, zero, _CMP_LT_OQ));
+    deg = _mm256_blendv_ps(deg, _mm256_sub_ps(deg, d180), _mm256_cmp_ps(deg, d180, _CMP_GE_OQ));
+    __m256i bin = _mm256_cvtps_epi32(deg);  // [0, 180]; 180 is bin 0.
+    bin = _mm256_sub_epi32(bin, _mm256_and_si256(_mm256_cmpgt_epi32(bin, last_angle), angles));
+    alignas(32) int out[8];
+    _mm256_store_si256(reinterpret_cast<__m256i*>(out), bin);
+    for (int k = 0; k < 8; ++k) {
+      const cv::Point& p = pool[i + k];
+      bins->ptr<uchar>(p.y)[p.x] = static_cast<uchar>(out[k]);
+    }
+  }
+  return i;
+}
+#endif
+
+// GradientBin of every pixel of the pool into *bins (AVX2 eight at a time where kAvx2).
+template <bool kAvx2>
+CORRIDOR_ALWAYS_INLINE inline void GradientBins(const std::vector<cv::Point>& pool,
+                                                const cv::Mat& dx, const cv::Mat& dy,
+                                                cv::Mat* bins) {
+  size_t i = 0;
+#ifdef CORRIDOR_AVX2_VARIANTS
+  if constexpr (kAvx2) i = GradientBinsAvx2(pool, dx, dy, bins);
+#endif
+  for (; i < pool.size(); ++i) {
+    const cv::Point& p = pool[i];
+    bins->at<uchar>(p.y, p.x) =
+        static_cast<uchar>(GradientBin(dx.at<short>(p.y, p.x), dy.at<short>(p.y, p.x)));
+  }
 }
 
 // Steps along the line of normal angle n from (u, v), one pixel along its major axis at a time,
@@ -269,9 +393,9 @@ CORRIDOR_ALWAYS_INLINE inline void HoughBody(const cv::Mat& edges, const cv::Mat
   pool.clear();
   ForEachEdgePixel(edges, [&](int u, int v) {
     state.at<uchar>(v, u) = kWaiting;
-    bins.at<uchar>(v, u) = static_cast<uchar>(GradientBin(dx.at<short>(v, u), dy.at<short>(v, u)));
     pool.emplace_back(u, v);
   });
+  GradientBins<kAvx2>(pool, dx, dy, &bins);
   DrawOrder(pool, &scratch.keys, &scratch.sorted, &scratch.drawn);
   const int max_gap =
       options.max_gap > 0 ? static_cast<int>(std::min(options.max_gap, 1.0 * (width + height)))
@@ -280,7 +404,7 @@ CORRIDOR_ALWAYS_INLINE inline void HoughBody(const cv::Mat& edges, const cv::Mat
     if (state.at<uchar>(p.y, p.x) != kWaiting) continue;  // Removed with a line meanwhile.
     state.at<uchar>(p.y, p.x) = kVoted;
     int angle = 0;
-    if (accumulator.Vote<kAvx2>(p.x, p.y, bins.at<uchar>(p.y, p.x), &angle) <
+    if (accumulator.Vote<kAvx2>(p.x, p.y, bins.at<uchar>(p.y, p.x), options.threshold, &angle) <
         options.threshold) {
       continue;
     }

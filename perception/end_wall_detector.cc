@@ -185,8 +185,12 @@ Status DetectEndWall(const cv::Mat& full_bgr, const Camera& full_camera, const C
       full_bgr.rows != full_camera.image_height) {
     return Status::InvalidArgument("end wall detector: image does not match the camera");
   }
-  // Large images are searched at half resolution (or less), with the camera scaled to match.
-  const WorkingImage work = HalveToWidth(full_bgr, full_camera, o.max_work_width);
+  // Large images are searched at half resolution (or less), with the camera scaled to match; the
+  // first halving reuses the blurred rows that came with the shared edges of this image.
+  const bool has_blurred = shared != nullptr && shared->image_rows == full_bgr.rows &&
+                           shared->smooth.cols == full_bgr.cols;
+  const WorkingImage work = HalveToWidth(full_bgr, full_camera, o.max_work_width,
+                                         has_blurred ? &shared->smooth : nullptr);
   const cv::Mat& bgr = work.bgr;
   const Camera& camera = work.camera;
   // Edges of the colour gradient: a dark baseboard on a dark floor has no grey edge.

@@ -17,8 +17,9 @@ namespace corridor {
 // gives D from its ray's intersection with the floor, and the median is the estimate. `bgr` is
 // the raw image; the camera's distortion is honoured. Never fails on bad images: found is false
 // with a reason. InvalidArgument for bad options or an image that is not the camera's size.
-// `edges`: the image's edges when another search has them (ComputeImageEdges of `bgr`), used when
-// the image is searched at its own resolution; else computed here.
+// `edges`: the image's edges when another search has them (ComputeImageEdges of `bgr`, or its top
+// rows), used when the image is searched at its own resolution; else computed here, the halving
+// reusing their blurred rows.
 Status DetectEndWall(const cv::Mat& bgr, const Camera& camera, const CorridorGeometry& geometry,
                      const EndWallDetectorOptions& options, EndWallEstimate* estimate,
                      const ImageEdges* edges = nullptr);

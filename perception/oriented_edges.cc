@@ -6,9 +6,11 @@
 
 #include <opencv2/imgproc.hpp>
 
-#ifdef __SSE2__
-#include <emmintrin.h>
+#ifdef __x86_64__
+#include <immintrin.h>
 #endif
+
+#include "core/cpu_features.h"
 
 #include "kernels/binomial_blur.h"
 #include "kernels/canny_edges.h"
@@ -95,10 +97,11 @@ int OrientationBin(int gx, int gy) {
 }
 
 bool ColorCannyEdges(const cv::Mat& bgr, int from, int to, cv::Mat* dx, cv::Mat* dy,
-                     cv::Mat* edges) {
-  cv::Mat smooth;
-  if (!BinomialBlur(bgr, from, to, 5, &smooth).ok()) return false;
-  ColorGradient(smooth, dx, dy, nullptr);
+                     cv::Mat* edges, cv::Mat* smooth) {
+  cv::Mat own;
+  cv::Mat& blurred = smooth != nullptr ? *smooth : own;
+  if (!BinomialBlur(bgr, from, to, 5, &blurred).ok()) return false;
+  ColorGradient(blurred, dx, dy, nullptr);
   return CannyFromGradients(*dx, *dy, 20, 60, true, edges).ok();
 }
 
@@ -115,7 +118,7 @@ namespace {
 // The image's rows [0, to) into *out; false (and *out empty) as ColorCannyEdges.
 bool EdgesFromTop(const cv::Mat& bgr, int to, ImageEdges* out) {
   *out = ImageEdges();
-  if (bgr.empty() || !ColorCannyEdges(bgr, 0, to, &out->dx, &out->dy, &out->edges)) {
+  if (bgr.empty() || !ColorCannyEdges(bgr, 0, to, &out->dx, &out->dy, &out->edges, &out->smooth)) {
     *out = ImageEdges();
     return false;
   }
@@ -171,12 +174,123 @@ OrientedEdges ComputeOrientedEdges(const cv::Mat& bgr, int top, int bottom, Imag
       b[u] = static_cast<uchar>(1u << OrientationBin(gx[u], gy[u]));
     });
   }
-  out.near.create(band.size(), CV_8U);
+  // One row more than the band, not part of `near`: OrientedLineHits reads four bytes at a pixel.
+  cv::Mat near_rows(band.height + 1, band.width, CV_8U);
+  out.near = near_rows.rowRange(0, band.height);
   OrNeighbourhoods(bits, &thread_along, &out.near);
   return out;
 }
 
+namespace {
+
+// The orientation bins within one of the line's normal, from its two visible ends (straight up to
+// the lens distortion).
+uchar NormalMask(const cv::Point& first, const cv::Point& last) {
+  const cv::Point d = last - first;
+  const int bin = OrientationBin(-d.y, d.x);
+  uchar mask = 0;
+  for (int k = -1; k <= 1; ++k) {
+    mask |= static_cast<uchar>(1u << ((bin + k + kOrientationBins) % kOrientationBins));
+  }
+  return mask;
+}
+
+#ifdef CORRIDOR_AVX2_VARIANTS
+// OrientedLineHits eight samples at a time: each one's neighbourhood bits gathered (the 32 bits at
+// its pixel, the low byte kept; 0 where not visible), kept in sample order with the visible ones'
+// count and first and last; then the hits counted among them. The same counts. From the first
+// group whose four-byte reads would pass the matrix's data limit on, sample by sample (never with
+// ComputeOrientedEdges' bands, which have a row to spare).
+__attribute__((target("avx2"))) LineHits OrientedLineHitsAvx2(const cv::Point* line, int samples,
+                                                              const OrientedEdges& edges) {
+  LineHits out;
+  const cv::Mat& near = edges.near;
+  const int rows = near.rows, cols = near.cols;
+  constexpr int kOnStack = 256;
+  alignas(32) int stack_bits[kOnStack];
+  std::vector<int> heap_bits;
+  int* bits = stack_bits;
+  if (samples > kOnStack) {
+    heap_bits.resize(samples);
+    bits = heap_bits.data();
+  }
+  const uchar* base = near.data;
+  const long readable = near.empty() ? 0 : static_cast<long>(near.datalimit - near.data) - 4;
+  const __m256i halves = _mm256_setr_epi32(0, 2, 4, 6, 1, 3, 5, 7);
+  const __m256i minus_one = _mm256_set1_epi32(-1), low_byte = _mm256_set1_epi32(255);
+  const __m256i col_end = _mm256_set1_epi32(cols), row_end = _mm256_set1_epi32(rows);
+  const __m256i top = _mm256_set1_epi32(edges.top);
+  const __m256i step = _mm256_set1_epi32(static_cast<int>(near.step[0]));
+  const int* points = reinterpret_cast<const int*>(line);  // x, y pairs.
+  int first = -1, last = -1, visible = 0;
+  int i = 0;
+  if (!near.empty() && static_cast<long>(near.step[0]) * rows < (1L << 31)) {
+    for (; i + 8 <= samples; i += 8) {
+      const __m256i a = _mm256_permutevar8x32_epi32(
+          _mm256_loadu_si256(reinterpret_cast<const __m256i*>(points + 2 * i)), halves);
+      const __m256i b = _mm256_permutevar8x32_epi32(
+          _mm256_loadu_si256(reinterpret_cast<const __m256i*>(points + 2 * i + 8)), halves);
+      const __m256i x = _mm256_permute2x128_si256(a, b, 0x20);
+      const __m256i r = _mm256_sub_epi32(_mm256_permute2x128_si256(a, b, 0x31), top);
+      const __m256i inside =
+          _mm256_and_si256(_mm256_and_si256(_mm256_cmpgt_epi32(x, minus_one),
+                                            _mm256_cmpgt_epi32(col_end, x)),
+                           _mm256_and_si256(_mm256_cmpgt_epi32(r, minus_one),
+                                            _mm256_cmpgt_epi32(row_end, r)));
+      const int lanes = _mm256_movemask_ps(_mm256_castsi256_ps(inside));
+      const __m256i offset = _mm256_add_epi32(_mm256_mullo_epi32(r, step), x);
+      if (lanes != 0) {
+        alignas(32) int offsets[8];
+        _mm256_store_si256(reinterpret_cast<__m256i*>(offsets), offset);
+        bool fits = true;
+        for (int k = 0; k < 8; ++k) fits &= !((lanes >> k) & 1) || offsets[k] <= readable;
+        if (!fits) break;  // The rest sample by sample.
+        if (first < 0) first = i + __builtin_ctz(static_cast<unsigned>(lanes));
+        last = i + 31 - __builtin_clz(static_cast<unsigned>(lanes));
+        visible += __builtin_popcount(static_cast<unsigned>(lanes));
+      }
+      const __m256i got = _mm256_mask_i32gather_epi32(_mm256_setzero_si256(),
+                                                      reinterpret_cast<const int*>(base), offset,
+                                                      inside, 1);
+      _mm256_storeu_si256(reinterpret_cast<__m256i*>(bits + i), _mm256_and_si256(got, low_byte));
+    }
+  }
+  for (; i < samples; ++i) {
+    const int x = line[i].x, r = line[i].y - edges.top;
+    if (!(x >= 0 && x < cols && r >= 0 && r < rows)) {
+      bits[i] = 0;
+      continue;
+    }
+    if (first < 0) first = i;
+    last = i;
+    ++visible;
+    bits[i] = near.ptr<uchar>(r)[x];
+  }
+  out.visible = visible;
+  if (visible < 8) return out;
+  const __m256i mask = _mm256_set1_epi32(NormalMask(line[first], line[last]));
+  int hits = 0;
+  int k = 0;
+  for (; k + 8 <= samples; k += 8) {
+    const __m256i hit = _mm256_and_si256(
+        _mm256_loadu_si256(reinterpret_cast<const __m256i*>(bits + k)), mask);
+    const int zero = _mm256_movemask_ps(
+        _mm256_castsi256_ps(_mm256_cmpeq_epi32(hit, _mm256_setzero_si256())));
+    hits += 8 - __builtin_popcount(static_cast<unsigned>(zero));
+  }
+  const int m = _mm256_cvtsi256_si32(mask);
+  for (; k < samples; ++k) hits += (bits[k] & m) != 0;
+  out.hits = hits;
+  return out;
+}
+#endif
+
+}  // namespace
+
 LineHits OrientedLineHits(const cv::Point* line, int samples, const OrientedEdges& edges) {
+#ifdef CORRIDOR_AVX2_VARIANTS
+  if (CpuHasAvx2()) return OrientedLineHitsAvx2(line, samples, edges);
+#endif
   LineHits out;
   const int rows = edges.near.rows, cols = edges.near.cols;
   // One pass over the samples: the visible ones' neighbourhood bits, in order (the orientation
@@ -199,13 +313,7 @@ LineHits OrientedLineHits(const cv::Point* line, int samples, const OrientedEdge
   }
   out.visible = visible;
   if (visible < 8) return out;
-  // The line's normal, from its two visible ends (straight up to the lens distortion).
-  const cv::Point d = line[last] - line[first];
-  const int bin = OrientationBin(-d.y, d.x);
-  uchar mask = 0;
-  for (int k = -1; k <= 1; ++k) {
-    mask |= static_cast<uchar>(1u << ((bin + k + kOrientationBins) % kOrientationBins));
-  }
+  const uchar mask = NormalMask(line[first], line[last]);
   int hits = 0;
   for (int i = 0; i < visible; ++i) hits += (bits[i] & mask) != 0;
   out.hits = hits;

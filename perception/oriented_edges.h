@@ -14,8 +14,9 @@ namespace corridor {
 // (and nothing written) for an image that is not 8-bit or an empty or out-of-range row range.
 // Colour edges: a green wall under a grey ceiling, or a dark baseboard on a dark floor, has
 // hardly any grey edge.
+// `smooth`, when given, gets the blurred rows.
 bool ColorCannyEdges(const cv::Mat& bgr, int from, int to, cv::Mat* dx, cv::Mat* dy,
-                     cv::Mat* edges);
+                     cv::Mat* edges, cv::Mat* smooth = nullptr);
 
 // Gradient orientations in this many bins over 180 degrees, one bit each.
 constexpr int kOrientationBins = 8;
@@ -38,6 +39,7 @@ struct OrientedEdges {
 struct ImageEdges {
   cv::Mat dx, dy;      // CV_16S colour gradient of rows [0, edges.rows).
   cv::Mat edges;       // CV_8U, 255 = edge.
+  cv::Mat smooth;      // The blurred rows [0, edges.rows) (the image's type): PyrDown reuses them.
   int image_rows = 0;  // Rows of the image they are of.
   // True when these are the edges of the whole of an image of `image`'s size.
   bool Fits(const cv::Mat& image) const { return Covers(image, image.rows); }

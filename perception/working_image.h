@@ -16,7 +16,11 @@ struct WorkingImage {
 // cv::pyrDown(image, *halved) with the default size and border: the same pixels, computed about
 // twice as fast with AVX2 for 8-bit images of 1 to 4 channels at least 3 px on a side (every
 // other image, or a CPU without AVX2, goes to cv::pyrDown itself).
-void PyrDown(const cv::Mat& image, cv::Mat* halved);
+// `blurred`, when given: the image's first rows blurred with [1 4 6 4 1] / 16 both ways at every
+// pixel (BinomialBlur(image, 0, rows, 5), which another search of the frame has computed): the
+// halved rows that fall on them are every second pixel of theirs, the same pixels, not summed
+// again. Ignored unless it has the image's type and width and at most its rows.
+void PyrDown(const cv::Mat& image, cv::Mat* halved, const cv::Mat* blurred = nullptr);
 
 // How many input pixels one working pixel spans when an image `width` wide is halved until it is
 // at most max_width wide (0: never): 1, 2, 4, ... (cv::pyrDown rounds odd sizes up).
@@ -26,6 +30,8 @@ int WorkingScale(int width, int max_width);
 // camera to match: cv::pyrDown's kernel is centred on every second pixel, so pixel i of a halved
 // image lies at input pixel 2 i, and f, cx and cy all halve. Distortion coefficients act on
 // normalised coordinates and carry over unchanged.
-WorkingImage HalveToWidth(const cv::Mat& bgr, const Camera& camera, int max_width);
+// `blurred`: as PyrDown's, for the first halving.
+WorkingImage HalveToWidth(const cv::Mat& bgr, const Camera& camera, int max_width,
+                          const cv::Mat* blurred = nullptr);
 
 }  // namespace corridor

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
+#include <utility>
 
 namespace corridor {
 namespace {
@@ -20,48 +22,68 @@ std::string Format(const char* format, double value) {
 double FrameConfidence(const FrameEvidence& e, std::string* why) {
   double confidence = 1.0;
   double weakest = 1.0;
-  std::string reason = "the evidence is good";
-  const auto factor = [&](double f, const std::string& because) {
+  // The weakest factor's reason, written only when the caller asks and only for a factor that is
+  // the weakest so far (most frames' factors are near 1: no strings made for them).
+  const char* reason_text = "the evidence is good";
+  std::string reason;
+  const auto factor = [&](double f, const auto& because) {
     confidence *= f;
-    if (f < weakest) weakest = f, reason = because;
+    if (f < weakest) {
+      weakest = f;
+      if (why != nullptr) reason = because(), reason_text = nullptr;
+    }
   };
   const char* const side_name[2] = {"left", "right"};
   for (int s = 0; s < 2; ++s) {
     // A junction line with hardly any boundary evidence or support is a weak base.
     if (e.junction[s] >= 0) {
-      factor(0.6 + 0.4 * Ramp(e.junction[s], 0.03, 0.15),
-             std::string("the ") + side_name[s] + " junction line has little edge support (" +
-                 Format("%.2f", e.junction[s]) + ")");
+      factor(0.6 + 0.4 * Ramp(e.junction[s], 0.03, 0.15), [&] {
+        return std::string("the ") + side_name[s] + " junction line has little edge support (" +
+               Format("%.2f", e.junction[s]) + ")";
+      });
     }
     // Vertical edges that go on below a junction: the wall goes on below it. With few edges the
     // fraction is uncertain: it is taken as crossing / (reaching + 1).
     const VerticalCrossings& c = e.crossings[s];
     if (c.reaching >= 3) {
       const double fraction = static_cast<double>(c.crossing) / (c.reaching + 1);
-      factor(1.0 - 0.8 * Ramp(fraction, 0.35, 0.75),
-             std::string("vertical edges cross the ") + side_name[s] + " junction (" +
-                 std::to_string(c.crossing) + " of " + std::to_string(c.reaching) +
-                 "): the wall goes on below it (a rail, sill or bench edge taken for the floor's "
-                 "edge?)");
+      factor(1.0 - 0.8 * Ramp(fraction, 0.35, 0.75), [&] {
+        return std::string("vertical edges cross the ") + side_name[s] + " junction (" +
+               std::to_string(c.crossing) + " of " + std::to_string(c.reaching) +
+               "): the wall goes on below it (a rail, sill or bench edge taken for the floor's "
+               "edge?)";
+      });
     }
   }
   // A wall moved out by the ceiling's evidence stands on that evidence alone: its junction is
   // often hidden (by the boxes whose edge was taken for it), so the image cannot confirm it.
   if (e.moved_side >= 0) {
-    factor(0.9, std::string("the ") + side_name[e.moved_side] +
-                    " wall was moved out to where its ceiling junction agrees with the other's");
+    factor(0.9, [&] {
+      return std::string("the ") + side_name[e.moved_side] +
+             " wall was moved out to where its ceiling junction agrees with the other's";
+    });
   }
   // Ceiling: two sides that disagree put one wall at a wrong distance, or the ceiling junctions
   // were misread (a window band, a glass wall's room behind, a steep view): it weighs less.
   if (e.ceiling_disagreement >= 0) {
-    factor(1.0 - 0.4 * Ramp(e.ceiling_disagreement, 0.1, 0.3),
-           Format("the two ceiling sides disagree by %.0f%%: a junction is not the floor's edge",
-                  100 * (std::exp(e.ceiling_disagreement) - 1)));
+    factor(1.0 - 0.4 * Ramp(e.ceiling_disagreement, 0.1, 0.3), [&] {
+      return Format("the two ceiling sides disagree by %.0f%%: a junction is not the floor's edge",
+                    100 * (std::exp(e.ceiling_disagreement) - 1));
+    });
   }
   if (e.corrected) {
-    factor(0.9, "the geometry needed a correction (one junction, a held width or a lower line)");
+    factor(0.9, [] {
+      return std::string(
+          "the geometry needed a correction (one junction, a held width or a lower line)");
+    });
   }
-  if (why != nullptr) *why = reason;
+  if (why != nullptr) {
+    if (reason_text != nullptr) {
+      *why = reason_text;
+    } else {
+      *why = std::move(reason);
+    }
+  }
   return std::clamp(confidence, 0.0, 1.0);
 }
 

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <opencv2/imgproc.hpp>
 
+#include "kernels/binomial_blur.h"
 #include "perception/ceiling_detector.h"
 #include "synth/corridor_renderer.h"
 #include "tests/support/corridor_frame.h"
@@ -96,6 +97,36 @@ TEST(WorkingImageTest, PyrDownGivesCvPyrDownsPixels) {
 
 // The recoverer searches the ceiling of images wider than 640 px at half resolution (its
 // search_max_width): there it still lands within 3% of the truth.
+// PyrDown with the image's top rows already blurred (BinomialBlur, as the ceiling search leaves
+// them): cv::pyrDown's pixels for every count of blurred rows (none, odd, even, all), sizes odd
+// and even, 1, 3 and 4 channels; a blur of another width is ignored.
+TEST(WorkingImageTest, PyrDownFromBlurredRowsGivesCvPyrDownsPixels) {
+  cv::RNG rng(23);
+  for (const int channels : {1, 3, 4}) {
+    for (const cv::Size size : {cv::Size(640, 480), cv::Size(641, 361), cv::Size(37, 9)}) {
+      cv::Mat image(size, CV_8UC(channels));
+      rng.fill(image, cv::RNG::UNIFORM, 0, 256);
+      cv::Mat theirs;
+      cv::pyrDown(image, theirs);
+      for (const int rows : {1, 2, 5, size.height / 2, size.height / 2 + 1, size.height}) {
+        cv::Mat blurred;
+        ASSERT_TRUE(BinomialBlur(image, 0, rows, 5, &blurred).ok());
+        cv::Mat ours;
+        PyrDown(image, &ours, &blurred);
+        ASSERT_EQ(ours.size(), theirs.size());
+        EXPECT_EQ(cv::norm(ours, theirs, cv::NORM_INF), 0.0)
+            << size << " x" << channels << ", " << rows << " rows blurred";
+      }
+      // A blur that is not of this image's width is not used.
+      cv::Mat narrow;
+      ASSERT_TRUE(BinomialBlur(image.colRange(0, size.width - 2), 0, 4, 5, &narrow).ok());
+      cv::Mat ours;
+      PyrDown(image, &ours, &narrow);
+      EXPECT_EQ(cv::norm(ours, theirs, cv::NORM_INF), 0.0) << size << " x" << channels;
+    }
+  }
+}
+
 TEST(WorkingImageTest, TheCeilingOfALargeFrameIsFoundAtHalfResolution) {
   const Camera camera = Camera::FromHorizontalFov(1280, 720, 85.0 * M_PI / 180, 0.7);
   const synth::Frame frame = testing_util::RenderCorridorFrame(
