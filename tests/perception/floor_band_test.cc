@@ -106,46 +106,45 @@ TEST_F(BandTest, AnEdgeTowardTheVanishingPointIsNotAcross) {
   EXPECT_EQ(band.vertical, 0);
 }
 
-TEST(SampleBelowLineTest, GivesTheColourBelowTheLine) {
-  // Grey-blue above the line v = 0.5 u + 40, brown below it.
-  cv::Mat bgr(200, 200, CV_8UC3);
-  const cv::Vec3b above(180, 150, 140), below(40, 90, 150);
-  for (int v = 0; v < bgr.rows; ++v) {
-    for (int u = 0; u < bgr.cols; ++u) bgr.at<cv::Vec3b>(v, u) = v > 0.5 * u + 40 ? below : above;
-  }
+// Grey-blue above the line v = 0.5 u + 40, brown below it, and the line.
+struct TwoColours {
+  const cv::Vec3b above{180, 150, 140}, below{40, 90, 150};
+  cv::Mat bgr = cv::Mat(200, 200, CV_8UC3);
   MergedLine line;
-  line.line = DownLine({0, 40}, {200, 140});
-  line.start = {10, 45};
-  line.end = {190, 135};
-  const FloorAppearance floor = SampleBelowLine(bgr, line, 0, 1);
+  TwoColours() {
+    for (int v = 0; v < bgr.rows; ++v) {
+      for (int u = 0; u < bgr.cols; ++u) {
+        bgr.at<cv::Vec3b>(v, u) = v > 0.5 * u + 40 ? below : above;
+      }
+    }
+    line.line = DownLine({0, 40}, {200, 140});
+    line.start = {10, 45};
+    line.end = {190, 135};
+  }
+};
+
+// A colour's 8-bit Lab value, converted here pixel by pixel.
+cv::Vec3f LabOf(const cv::Vec3b& c) {
   cv::Mat lab;
-  cv::cvtColor(cv::Mat(1, 1, CV_8UC3, cv::Scalar(below[0], below[1], below[2])), lab,
-               cv::COLOR_BGR2Lab);
-  const cv::Vec3b expected = lab.at<cv::Vec3b>(0, 0);
+  cv::cvtColor(cv::Mat(1, 1, CV_8UC3, cv::Scalar(c[0], c[1], c[2])), lab, cv::COLOR_BGR2Lab);
+  return cv::Vec3f(lab.at<cv::Vec3b>(0, 0));
+}
+
+TEST(SampleBelowLineTest, GivesTheColourBelowTheLine) {
+  const TwoColours image;
+  const FloorAppearance floor = SampleBelowLine(image.bgr, image.line, 0, 1);
+  const cv::Vec3f expected = LabOf(image.below);
   for (int c = 0; c < 3; ++c) EXPECT_EQ(floor.lab[c], expected[c]) << "channel " << c;
   EXPECT_EQ(floor.spread, 1.0f);
 }
 
 TEST(FloorLikenessAboveTest, IsOneForTheFloorsColourAndTheGaussianOfItsDistanceElse) {
-  // Grey-blue above the line v = 0.5 u + 40, brown below it.
-  cv::Mat bgr(200, 200, CV_8UC3);
-  const cv::Vec3b above(180, 150, 140), below(40, 90, 150);
-  for (int v = 0; v < bgr.rows; ++v) {
-    for (int u = 0; u < bgr.cols; ++u) bgr.at<cv::Vec3b>(v, u) = v > 0.5 * u + 40 ? below : above;
-  }
-  MergedLine line;
-  line.line = DownLine({0, 40}, {200, 140});
-  line.start = {10, 45};
-  line.end = {190, 135};
-  // Each colour's Lab value, converted here pixel by pixel.
-  const auto lab_of = [](const cv::Vec3b& c) {
-    cv::Mat lab;
-    cv::cvtColor(cv::Mat(1, 1, CV_8UC3, cv::Scalar(c[0], c[1], c[2])), lab, cv::COLOR_BGR2Lab);
-    return cv::Vec3f(lab.at<cv::Vec3b>(0, 0));
-  };
+  const TwoColours image;
+  const cv::Mat& bgr = image.bgr;
+  const MergedLine& line = image.line;
   FloorAppearance brown, grey;
-  brown.lab = lab_of(below);
-  grey.lab = lab_of(above);
+  brown.lab = LabOf(image.below);
+  grey.lab = LabOf(image.above);
   // Uniform floors: spread 1, so the likeness is exp(-d^2 / (2 * 6^2)) with d the Lab distance
   // (lightness weighted a quarter: 0.0385 on the squared 8-bit L).
   const cv::Vec3f d = grey.lab - brown.lab;
