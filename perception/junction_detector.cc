@@ -265,10 +265,11 @@ PairSearch SearchPair(const cv::Mat& color, const JunctionSearchRegion& region,
   }
   if (options.stripe_floor_likeness > 0) {
     cues.floor_band.stripe_min_beyond = options.stripe_floor_likeness;
-    cues.floor_band.floor_above = [&cues](const MergedLine& inner, const MergedLine& line) {
-      return FloorLikenessAbove(cues.roi,
-                                SampleBelowLine(cues.roi, inner, cues.roi_top, cues.scale), line,
-                                cues.roi_top, cues.scale);
+    cues.floor_band.floor_below = [&cues](const MergedLine& line) {
+      return SampleBelowLine(cues.roi, line, cues.roi_top, cues.scale);
+    };
+    cues.floor_band.floor_above = [&cues](const FloorAppearance& floor, const MergedLine& line) {
+      return FloorLikenessAbove(cues.roi, floor, line, cues.roi_top, cues.scale);
     };
   }
   const Eigen::Vector2d size(width, height);

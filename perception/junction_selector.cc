@@ -38,10 +38,14 @@ bool PassesThrough(const MergedLine& line, const Eigen::Vector2d& vp) {
   return off <= std::max(3.0, 0.02 * reach);
 }
 
+// The lower end of a line (its end nearer the image bottom).
+Eigen::Vector2d LowEnd(const MergedLine& line) {
+  return line.start.y() > line.end.y() ? line.start : line.end;
+}
+
 // Direction (unit) from the vanishing point down along the line.
 Eigen::Vector2d DownDirection(const MergedLine& line, const Eigen::Vector2d& vp) {
-  const Eigen::Vector2d far = line.start.y() > line.end.y() ? line.start : line.end;
-  return (far - vp).normalized();
+  return (LowEnd(line) - vp).normalized();
 }
 
 // A baseboard's top and bottom edges (the junction) meet the vanishing point within a few
@@ -122,6 +126,12 @@ void ApplyBaseboardRule(const std::vector<JunctionCandidate>& side, const Eigen:
 // Lines above lines: a runner's edge, its border, a stripe; more is not a floor's pattern.
 constexpr int kMaxFloorSteps = 3;
 
+// True when `outer` passes through the vanishing point and lies above (on the wall side of)
+// `low`, the lower end of the chosen line.
+bool LiesAbove(const MergedLine& outer, const Eigen::Vector2d& low, const Eigen::Vector2d& vp) {
+  return PassesThrough(outer, vp) && outer.line.dot(low.homogeneous()) > 0;
+}
+
 // True when `band`'s edges say floor (see FloorBandTest).
 bool IsFloorBand(const BandEdges& band, const FloorBandTest& test) {
   if (band.across_rows < test.min_across_rows) return false;
@@ -147,13 +157,12 @@ void ApplyFloorRule(const Eigen::Vector2d& vp, const FloorBandTest& test,
   const int first = *chosen;
   for (int step = 0; step < kMaxFloorSteps; ++step) {
     const MergedLine& inner = side[*chosen].line;
-    const Eigen::Vector2d low = inner.start.y() > inner.end.y() ? inner.start : inner.end;
+    const Eigen::Vector2d low = LowEnd(inner);
     int best = -1;
     long best_pixels = 0;
     for (size_t k = 0; k < side.size(); ++k) {
       const MergedLine& outer = side[k].line;
-      if (static_cast<int>(k) == *chosen || !PassesThrough(outer, vp)) continue;
-      if (!(outer.line.dot(low.homogeneous()) > 0)) continue;  // Not above the chosen line.
+      if (static_cast<int>(k) == *chosen || !LiesAbove(outer, low, vp)) continue;
       const BandEdges band = test.measure(inner, outer, vp);
       if (IsFloorBand(band, test) && (best < 0 || band.pixels < best_pixels)) {
         best = static_cast<int>(k);
@@ -182,18 +191,18 @@ void ApplyStripeRule(const Eigen::Vector2d& vp, const FloorBandTest& test,
                      const std::vector<JunctionCandidate>& side, int* chosen, int* inner_index,
                      int* lower) {
   const MergedLine& inner = side[*chosen].line;
-  if (test.floor_above(inner, inner) > test.stripe_max_inner) return;
-  const Eigen::Vector2d low = inner.start.y() > inner.end.y() ? inner.start : inner.end;
+  const FloorAppearance floor = test.floor_below(inner);
+  if (test.floor_above(floor, inner) > test.stripe_max_inner) return;
+  const Eigen::Vector2d low = LowEnd(inner);
   std::vector<std::pair<long, int>> above;  // (band pixels, candidate index)
   for (size_t k = 0; k < side.size(); ++k) {
     const MergedLine& outer = side[k].line;
-    if (static_cast<int>(k) == *chosen || !PassesThrough(outer, vp)) continue;
-    if (!(outer.line.dot(low.homogeneous()) > 0)) continue;  // Not above the chosen line.
+    if (static_cast<int>(k) == *chosen || !LiesAbove(outer, low, vp)) continue;
     above.emplace_back(test.measure(inner, outer, vp).pixels, static_cast<int>(k));
   }
   std::sort(above.begin(), above.end());
   for (size_t i = 0; i + 1 < above.size(); ++i) {
-    if (test.floor_above(inner, side[above[i].second].line) >= test.stripe_min_beyond) {
+    if (test.floor_above(floor, side[above[i].second].line) >= test.stripe_min_beyond) {
       if (*inner_index < 0) *inner_index = *chosen;
       *chosen = above[i + 1].second;
       *lower = -1;
@@ -258,7 +267,7 @@ SelectedPair SelectJunctionPair(std::vector<JunctionCandidate>* left_candidates,
     ApplyBaseboardRule(left, best.vanishing_point, true, band, &best.left, &best.left_lower);
     ApplyBaseboardRule(right, best.vanishing_point, false, band, &best.right, &best.right_lower);
   }
-  if (best.left >= 0 && floor_band.measure && floor_band.floor_above) {
+  if (best.left >= 0 && floor_band.measure && floor_band.floor_below && floor_band.floor_above) {
     ApplyStripeRule(best.vanishing_point, floor_band, left, &best.left, &best.left_inner,
                     &best.left_lower);
     ApplyStripeRule(best.vanishing_point, floor_band, right, &best.right, &best.right_inner,

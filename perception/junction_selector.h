@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 
+#include "perception/appearance.h"
 #include "perception/floor_band.h"
 #include "perception/line_segments.h"
 
@@ -63,10 +64,12 @@ struct FloorBandTest {
   // edges stand vertical or run along the corridor), on at least min_across_rows rows.
   double min_texture_density = 0.05;  // Edge pixels per band pixel, at least; 0: no texture test.
   double min_oblique_ratio = 3.0;     // Oblique edge pixels per vertical and per across one.
-  // The stripe rule: how much the strip just above `line` looks like the floor just below `inner`
-  // (FloorLikenessAbove against SampleBelowLine); empty: no stripe rule. A stripe, a border or a
-  // runner's edge painted or laid beside the wall has floor beyond it; the junction has wall.
-  std::function<double(const MergedLine& inner, const MergedLine& line)> floor_above;
+  // The stripe rule: the floor just below a line (SampleBelowLine), and how much the strip just
+  // above a line looks like it (FloorLikenessAbove); either empty: no stripe rule. A stripe, a
+  // border or a runner's edge painted or laid beside the wall has floor beyond it; the junction
+  // has wall.
+  std::function<FloorAppearance(const MergedLine& line)> floor_below;
+  std::function<double(const FloorAppearance& floor, const MergedLine& line)> floor_above;
   double stripe_max_inner = 0.35;  // The chosen line shows at most this much floor above it...
   double stripe_min_beyond = 0.7;  // ... and a line above it at least this much: the floor goes
                                    // on beyond that line, and the next line above bounds it.
