@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <initializer_list>
 #include <string>
 #include <utility>
 #include <vector>
@@ -182,6 +183,24 @@ double WorstJunctionOffsetPx(const std::string& real_class, int scene, int index
   return worst;
 }
 
+// On each (scene, frame) of `real_class`: the junctions found without a rule (`without`) lie more
+// than `premise_px` from the true lines (the premise: a line inside the floor was taken), those
+// found with the default options within `within_px`.
+void ExpectTheRuleTakesTheJunctions(const std::string& real_class,
+                                    std::initializer_list<std::pair<int, int>> frames,
+                                    const JunctionDetectorOptions& without, double premise_px,
+                                    double within_px) {
+  for (const auto& [scene, index] : frames) {
+    const double with_rule =
+        WorstJunctionOffsetPx(real_class, scene, index, JunctionDetectorOptions());
+    const double without_rule = WorstJunctionOffsetPx(real_class, scene, index, without);
+    std::printf("%s scene %d frame %d: junctions within %.1f px with the rule, %.1f px without\n",
+                real_class.c_str(), scene, index, with_rule, without_rule);
+    EXPECT_GT(without_rule, premise_px) << scene << "/" << index;
+    EXPECT_LT(with_rule, within_px) << scene << "/" << index;
+  }
+}
+
 // A carpet runner down the middle of a tiled floor (scene 0) and one with a border (scene 4): the
 // reference patch at the bottom centre shows the runner, so its edges look like the floor's
 // boundary and the pair choice takes them. The tile joints between the runner and each wall run
@@ -189,14 +208,7 @@ double WorstJunctionOffsetPx(const std::string& real_class, int scene, int index
 TEST(FloorRuleTest, TakesTheJunctionsBeyondACarpetRunner) {
   JunctionDetectorOptions without;
   without.floor_band_min_across = 0;
-  for (const auto& [scene, index] : {std::pair{0, 0}, {0, 4}, {4, 1}, {4, 2}}) {
-    const double with_rule = WorstJunctionOffsetPx("floor", scene, index, JunctionDetectorOptions());
-    const double without_rule = WorstJunctionOffsetPx("floor", scene, index, without);
-    std::printf("scene %d frame %d: junctions within %.1f px with the rule, %.1f px without\n",
-                scene, index, with_rule, without_rule);
-    EXPECT_GT(without_rule, 20.0) << scene << "/" << index;  // The premise: a runner edge.
-    EXPECT_LT(with_rule, 3.0) << scene << "/" << index;
-  }
+  ExpectTheRuleTakesTheJunctions("floor", {{0, 0}, {0, 4}, {4, 1}, {4, 2}}, without, 20.0, 3.0);
 }
 
 // Dark stripes painted 0.1-0.5 m from each wall on a tiled floor (scenes 8 and 9): a stripe's
@@ -206,14 +218,7 @@ TEST(FloorRuleTest, TakesTheJunctionsBeyondACarpetRunner) {
 TEST(StripeRuleTest, TakesTheJunctionsBeyondAFloorStripe) {
   JunctionDetectorOptions without;
   without.stripe_floor_likeness = 0;
-  for (const auto& [scene, index] : {std::pair{8, 2}, {8, 3}, {9, 3}}) {
-    const double with_rule = WorstJunctionOffsetPx("floor", scene, index, JunctionDetectorOptions());
-    const double without_rule = WorstJunctionOffsetPx("floor", scene, index, without);
-    std::printf("scene %d frame %d: junctions within %.1f px with the rule, %.1f px without\n",
-                scene, index, with_rule, without_rule);
-    EXPECT_GT(without_rule, 20.0) << scene << "/" << index;  // The premise: a stripe's edge.
-    EXPECT_LT(with_rule, 3.0) << scene << "/" << index;
-  }
+  ExpectTheRuleTakesTheJunctions("floor", {{8, 2}, {8, 3}, {9, 3}}, without, 20.0, 3.0);
 }
 
 TEST(StripeRuleTest, BadOptionIsRejected) {
@@ -234,14 +239,7 @@ TEST(StripeRuleTest, BadOptionIsRejected) {
 TEST(FloorRuleTest, TakesTheJunctionsBeyondARunnerOnCarpet) {
   JunctionDetectorOptions without;
   without.floor_band_texture_density = 0;
-  for (const auto& [scene, index] : {std::pair{6, 7}, {7, 14}}) {
-    const double with_rule = WorstJunctionOffsetPx("mix", scene, index, JunctionDetectorOptions());
-    const double without_rule = WorstJunctionOffsetPx("mix", scene, index, without);
-    std::printf("scene %d frame %d: junctions within %.1f px with the texture, %.1f px without\n",
-                scene, index, with_rule, without_rule);
-    EXPECT_GT(without_rule, 50.0) << scene << "/" << index;  // The premise: the runner's edges.
-    EXPECT_LT(with_rule, 10.0) << scene << "/" << index;
-  }
+  ExpectTheRuleTakesTheJunctions("mix", {{6, 7}, {7, 14}}, without, 50.0, 10.0);
 }
 
 TEST(FloorRuleTest, BadOptionIsRejected) {
