@@ -67,6 +67,8 @@ bool JunctionDetectorOptions::Check(std::string* why) const {
     reason = "floor_band_texture_density must be in [0, 1] (0 = off)";
   } else if (!(stripe_floor_likeness >= 0 && stripe_floor_likeness <= 1)) {
     reason = "stripe_floor_likeness must be in [0, 1] (0 = off)";
+  } else if (!(inside_floor_likeness >= 0 && inside_floor_likeness <= 1)) {
+    reason = "inside_floor_likeness must be in [0, 1] (0 = off)";
   } else if (!(support_distance_px > 0)) {
     reason = "support_distance_px must be positive";
   } else if (!(baseboard_band_contrast >= 0 && baseboard_band_contrast <= 1e6)) {
@@ -248,7 +250,9 @@ PairSearch SearchPair(const cv::Mat& color, const JunctionSearchRegion& region,
   const BaseboardBandTest band = MakeBandTest(options, cues);
   cues.floor_band.min_across = options.floor_band_min_across;
   cues.floor_band.min_texture_density = options.floor_band_texture_density;
-  if (options.floor_band_min_across > 0 || options.stripe_floor_likeness > 0) {
+  const bool floor_colour_rules =
+      options.stripe_floor_likeness > 0 || options.inside_floor_likeness > 0;
+  if (options.floor_band_min_across > 0 || floor_colour_rules) {
     BandEdgeOptions band_options;
     band_options.margin = 3.0 * region.scale;  // Clear of the lines' own edges (the 5x5 reach).
     const GradientGrid grid = SearchRegionGrid(region);
@@ -263,8 +267,9 @@ PairSearch SearchPair(const cv::Mat& color, const JunctionSearchRegion& region,
                            outer, cues.roi_top, cues.scale);
     };
   }
-  if (options.stripe_floor_likeness > 0) {
+  if (floor_colour_rules) {
     cues.floor_band.stripe_min_beyond = options.stripe_floor_likeness;
+    cues.floor_band.inside_min_likeness = options.inside_floor_likeness;
     cues.floor_band.floor_below = [&cues](const MergedLine& line) {
       return SampleBelowLine(cues.roi, line, cues.roi_top, cues.scale);
     };

@@ -211,6 +211,31 @@ void ApplyStripeRule(const Eigen::Vector2d& vp, const FloorBandTest& test,
   }
 }
 
+// A line with the floor's colour on both sides lies inside the floor (a tile joint beside the
+// wall, a runner's or a shadow's edge): the nearest line above it bounds the floor.
+void ApplyInsideFloorRule(const Eigen::Vector2d& vp, const FloorBandTest& test,
+                          const std::vector<JunctionCandidate>& side, int* chosen,
+                          int* inner_index, int* lower) {
+  const MergedLine& inner = side[*chosen].line;
+  if (test.floor_above(test.floor_below(inner), inner) < test.inside_min_likeness) return;
+  const Eigen::Vector2d low = LowEnd(inner);
+  long nearest_pixels = 0;
+  int nearest = -1;
+  for (size_t k = 0; k < side.size(); ++k) {
+    const MergedLine& outer = side[k].line;
+    if (static_cast<int>(k) == *chosen || !LiesAbove(outer, low, vp)) continue;
+    const long pixels = test.measure(inner, outer, vp).pixels;
+    if (nearest < 0 || pixels < nearest_pixels) {
+      nearest_pixels = pixels;
+      nearest = static_cast<int>(k);
+    }
+  }
+  if (nearest < 0) return;
+  if (*inner_index < 0) *inner_index = *chosen;
+  *chosen = nearest;
+  *lower = -1;
+}
+
 }  // namespace
 
 SelectedPair SelectJunctionPair(std::vector<JunctionCandidate>* left_candidates,
@@ -268,10 +293,18 @@ SelectedPair SelectJunctionPair(std::vector<JunctionCandidate>* left_candidates,
     ApplyBaseboardRule(right, best.vanishing_point, false, band, &best.right, &best.right_lower);
   }
   if (best.left >= 0 && floor_band.measure && floor_band.floor_below && floor_band.floor_above) {
-    ApplyStripeRule(best.vanishing_point, floor_band, left, &best.left, &best.left_inner,
-                    &best.left_lower);
-    ApplyStripeRule(best.vanishing_point, floor_band, right, &best.right, &best.right_inner,
-                    &best.right_lower);
+    if (floor_band.stripe_min_beyond > 0) {
+      ApplyStripeRule(best.vanishing_point, floor_band, left, &best.left, &best.left_inner,
+                      &best.left_lower);
+      ApplyStripeRule(best.vanishing_point, floor_band, right, &best.right, &best.right_inner,
+                      &best.right_lower);
+    }
+    if (floor_band.inside_min_likeness > 0) {
+      ApplyInsideFloorRule(best.vanishing_point, floor_band, left, &best.left, &best.left_inner,
+                           &best.left_lower);
+      ApplyInsideFloorRule(best.vanishing_point, floor_band, right, &best.right,
+                           &best.right_inner, &best.right_lower);
+    }
   }
   return best;
 }

@@ -73,6 +73,9 @@ struct FloorBandTest {
   double stripe_max_inner = 0.35;  // The chosen line shows at most this much floor above it...
   double stripe_min_beyond = 0.7;  // ... and a line above it at least this much: the floor goes
                                    // on beyond that line, and the next line above bounds it.
+  // The inside-floor rule: a chosen line with at least this much floor above it lies inside the
+  // floor, and the nearest line above it becomes the chosen line; 0: no inside-floor rule.
+  double inside_min_likeness = 0;
 };
 
 // Scores every (left, right) pair: both lines' support lengths and boundary scores, plus the
@@ -85,7 +88,9 @@ struct FloorBandTest {
 // the floor rule (`floor_band`): the nearest line above the chosen one whose band is floor
 // becomes the chosen line, its boundary score the higher of the two (`floor_band.boundary`).
 // After both, the stripe rule (`floor_band.floor_above`): when the floor goes on above a line
-// beyond the chosen one, the next line above that one becomes the chosen line.
+// beyond the chosen one, the next line above that one becomes the chosen line. Last, the
+// inside-floor rule (`floor_band.inside_min_likeness`): a chosen line with floor colour above it
+// as well as below gives way to the nearest line above it.
 SelectedPair SelectJunctionPair(std::vector<JunctionCandidate>* left,
                                 std::vector<JunctionCandidate>* right,
                                 const std::vector<MergedLine>& all_lines,

@@ -95,6 +95,10 @@ DEFINE_double(stripe_floor_likeness, 0.7,
               "A chosen junction with a line above it that has the floor's colour beyond it (at "
               "least this alike, in [0, 1]) is a stripe's or border's edge: the next line above "
               "is the junction; 0 = off");
+DEFINE_double(inside_floor_likeness, 0.95,
+              "A chosen junction with the floor's colour on both sides (the strip above it at "
+              "least this alike to the floor below it, in [0, 1]) lies inside the floor: the "
+              "nearest line above is the junction; 0 = off");
 
 namespace corridor {
 
@@ -121,6 +125,7 @@ Status RecoverDepthOptionsFromFlags(RecoverDepthOptions* options) {
   options->perception.max_floor_texture = FLAGS_max_floor_texture;
   options->perception.floor_band_min_across = FLAGS_floor_band_min_across;
   options->perception.stripe_floor_likeness = FLAGS_stripe_floor_likeness;
+  options->perception.inside_floor_likeness = FLAGS_inside_floor_likeness;
   options->perception.floor_band_texture_density = FLAGS_floor_band_texture_density;
   options->perception.hough_angle_window_deg = FLAGS_hough_angle_window;
   options->perception.relaxed_hough_threshold = FLAGS_relaxed_hough_threshold;

@@ -231,6 +231,27 @@ TEST(StripeRuleTest, BadOptionIsRejected) {
   }
 }
 
+// A tiled floor up to a grey baseboard (scene 5 of the class with window bands): the last tile
+// joint runs a few centimetres from the left wall, floor-coloured on both sides, and the pair
+// choice takes it (the left wall about 7% too near; corridor_eval's width 3.7% short); the strip
+// above the joint looks like the floor below it, so the inside-floor rule takes the line above
+// (about 7 px out without the rule, within a pixel with it).
+TEST(InsideFloorRuleTest, TakesTheJunctionAboveATileJointBesideTheWall) {
+  JunctionDetectorOptions without;
+  without.inside_floor_likeness = 0;
+  ExpectTheRuleTakesTheJunctions("windows", {{5, 6}, {5, 8}, {5, 9}}, without, 5.0, 1.0);
+}
+
+TEST(InsideFloorRuleTest, BadOptionIsRejected) {
+  for (const double likeness : {-0.1, 1.5}) {
+    JunctionDetectorOptions options;
+    options.inside_floor_likeness = likeness;
+    std::string why;
+    EXPECT_FALSE(options.Check(&why));
+    EXPECT_NE(why.find("inside_floor_likeness"), std::string::npos) << why;
+  }
+}
+
 // A runner with a dark border on a carpeted floor (scenes 6 and 7 of the class with every part):
 // between the border and each wall the carpet has edges in every direction, as many vertical as
 // across, so no tile joints say floor; its texture does (mostly oblique edges, densely). The
