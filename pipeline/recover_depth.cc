@@ -238,9 +238,11 @@ Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* res
       !junctions.status.ok() || result->width_held || result->walls_scaled ||
           result->lower_line_taken,
       result->moved_side, options_.vertical_crossings);
-  std::string weakest;
-  result->confidence = FrameConfidence(result->evidence, &weakest);
+  result->confidence = FrameConfidence(result->evidence);
   if (result->confidence < options_.min_confidence) {
+    // The weakest factor's reason only for a refusal's message.
+    std::string weakest;
+    FrameConfidence(result->evidence, &weakest);
     std::ostringstream msg;
     msg.precision(2);
     msg << std::fixed << "confidence " << result->confidence << " is below "
