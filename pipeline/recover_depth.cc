@@ -143,8 +143,11 @@ Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* res
     status = CheckPlausible(geometry, options_);
     if (!status.ok()) return finish(status);
   } else {
-    const CorridorObservation observation =
-        ObservationFromJunctions(result->junctions, camera, options_.points_per_line);
+    // The thread's observation, whose point vectors keep their memory from frame to frame.
+    thread_local CorridorObservation thread_observation;
+    const CorridorObservation& observation = thread_observation;
+    ObservationFromJunctions(result->junctions, camera, options_.points_per_line,
+                             &thread_observation);
     status = solver_->Solve(observation, nullptr, &result->solver_summary);
     result->times.solve = SecondsSince(stage);
     if (!status.ok()) {
