@@ -31,7 +31,11 @@ struct BoundedLmOptions {
 };
 
 struct BoundedLmSummary {
-  enum class Termination { kConvergence, kNoConvergence, kFailure };
+  enum class Termination {
+    kConvergence,
+    kNoConvergence,
+    kFailure,
+  };
   Termination termination = Termination::kFailure;
   const char* message = "";
   int residual_evaluations = 0;  // Cost-only evaluations (Ceres's num_residual_evaluations).
@@ -318,11 +322,13 @@ BoundedLmSummary SolveBoundedLm(const Residuals& residuals, const BoundedLmOptio
         }
         return s;
       };
+      const auto sufficient_decrease = [&](const LineSample& s) {
+        return s.value_ok &&
+               !(s.value > initial.value + kSufficientDecrease * initial.gradient * s.x);
+      };
       sample = evaluate(1.0);
       bool success = true;
-      for (int tries = 0; !sample.value_ok || sample.value > initial.value + kSufficientDecrease *
-                                                                              initial.gradient *
-                                                                              sample.x;) {
+      for (int tries = 0; !sufficient_decrease(sample);) {
         if (++tries >= kMaxLineIterations) {
           success = false;
           break;

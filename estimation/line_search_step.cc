@@ -79,7 +79,8 @@ bool RealPartsOfRoots(const Polynomial& p_in, double* roots, int* count) {
     return true;
   }
   if (degree == 2) {
-    const double a = c[0], b = c[1], cc = c[2], d = b * b - 4 * a * cc, sqrt_d = std::sqrt(std::abs(d));
+    const double a = c[0], b = c[1], cc = c[2], d = b * b - 4 * a * cc;
+    const double sqrt_d = std::sqrt(std::abs(d));
     if (d >= 0) {
       roots[0] = b >= 0 ? (-b - sqrt_d) / (2.0 * a) : (2.0 * cc) / (-b + sqrt_d);
       roots[1] = b >= 0 ? (2.0 * cc) / (-b - sqrt_d) : (-b + sqrt_d) / (2.0 * a);

@@ -12,7 +12,11 @@ namespace corridor {
 // define them (rho' is kept above the smallest positive double).
 class RobustLoss {
  public:
-  enum class Kind { kNone, kHuber, kCauchy };
+  enum class Kind {
+    kNone,
+    kHuber,
+    kCauchy,
+  };
 
   RobustLoss() = default;
   RobustLoss(Kind kind, double scale) : kind_(kind), a_(scale), b_(scale * scale) {}

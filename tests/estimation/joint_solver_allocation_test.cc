@@ -35,7 +35,8 @@ TEST(JointSolverAllocationTest, ASteadyStateSolveAllocatesNothing) {
     obs.left[4].y() += 25;  // an outlier, so that the loss matters
     const CorridorGeometry start = testing::MakeGeometry(0.05, 0.0, 0.0, 2.0, 0.62);
     SolverSummary summary;
-    for (const CorridorGeometry* initial : {&start, static_cast<const CorridorGeometry*>(nullptr)}) {
+    const CorridorGeometry* const starts[] = {&start, nullptr};
+    for (const CorridorGeometry* initial : starts) {
       ASSERT_TRUE(solver.Solve(obs, initial, &summary).ok());  // warm-up
       const long before = allocations.load();
       ASSERT_TRUE(solver.Solve(obs, initial, &summary).ok());
