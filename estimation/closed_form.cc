@@ -34,7 +34,9 @@ bool MedianLateralPosition(const FloorIntrinsics& k, const CorridorRotation<doub
 // neither tilt the fitted line nor shift the lateral positions.
 // Into *inliers, which keeps its memory.
 void Inliers(const std::vector<Eigen::Vector2d>& points, std::vector<Eigen::Vector2d>* inliers) {
-  const std::vector<char> keep = LineInlierMask(points);
+  thread_local std::vector<char> thread_keep;
+  std::vector<char>& keep = thread_keep;
+  LineInlierMask(points, &keep);
   inliers->clear();
   for (size_t i = 0; i < points.size(); ++i) {
     if (keep[i]) inliers->push_back(points[i]);

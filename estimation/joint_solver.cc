@@ -3,20 +3,27 @@
 #include <algorithm>
 #include <chrono>
 
-#include <ceres/ceres.h>
-
-#include "estimation/ceres_options.h"
+#include "estimation/bounded_lm.h"
 #include "estimation/closed_form.h"
 #include "estimation/junction_line_residual.h"
 
 namespace corridor {
 namespace {
 
-ceres::LossFunction* MakeLoss(const SolverOptions& options) {
-  if (options.loss == "huber") return new ceres::HuberLoss(options.loss_scale);
-  if (options.loss == "cauchy") return new ceres::CauchyLoss(options.loss_scale);
-  return nullptr;  // "none"; SolverOptions::Check rejects other names.
-}
+// The JunctionLineResidual of every edge point: the left junction's points, then the right's.
+struct JunctionResiduals {
+  const CorridorObservation& observation;
+  const FloorIntrinsics intrinsics;
+
+  int size() const { return static_cast<int>(observation.left.size() + observation.right.size()); }
+
+  template <typename T>
+  bool operator()(int i, const T* x, T* residual) const {
+    const int left = static_cast<int>(observation.left.size());
+    const auto& p = i < left ? observation.left[i] : observation.right[i - left];
+    return JunctionLineResidual(intrinsics, p.x(), p.y(), i < left ? -1 : 1)(x, residual);
+  }
+};
 
 }  // namespace
 
@@ -39,32 +46,27 @@ Status JointSolver::Solve(const CorridorObservation& observation, const Corridor
                  std::clamp(start_geometry.pitch, -lm.max_abs_pitch, lm.max_abs_pitch),
                  start_geometry.offset,
                  start_geometry.width > 0.05 ? start_geometry.width : lm.initial_width};
-  const FloorIntrinsics k{observation.fx, observation.fy, observation.cx, observation.cy,
-                          observation.camera_height};
-  ceres::Problem::Options problem_options;
-  problem_options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
-  ceres::Problem problem(problem_options);
-  std::unique_ptr<ceres::LossFunction> loss(MakeLoss(options_));
-  for (int side = -1; side <= 1; side += 2) {
-    for (const auto& p : side < 0 ? observation.left : observation.right) {
-      problem.AddResidualBlock(JunctionLineResidual::Create(k, p.x(), p.y(), side), loss.get(), x);
-    }
-  }
-  problem.SetParameterLowerBound(x, 0, -lm.max_abs_yaw);
-  problem.SetParameterUpperBound(x, 0, lm.max_abs_yaw);
-  problem.SetParameterLowerBound(x, 1, -lm.max_abs_pitch);
-  problem.SetParameterUpperBound(x, 1, lm.max_abs_pitch);
-  problem.SetParameterLowerBound(x, 3, 0.05);
-  ceres::Solver::Summary ceres_summary;
-  ceres::Solve(LevenbergMarquardtOptions(lm), &problem, &ceres_summary);
-  summary->evaluations = ceres_summary.num_residual_evaluations;
-  summary->iterations = static_cast<int>(ceres_summary.iterations.size());
-  summary->final_cost = ceres_summary.final_cost;
-  summary->converged = ceres_summary.termination_type == ceres::CONVERGENCE;
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  const double lower[4] = {-lm.max_abs_yaw, -lm.max_abs_pitch, -kInf, 0.05};
+  const double upper[4] = {lm.max_abs_yaw, lm.max_abs_pitch, kInf, kInf};
+  BoundedLmOptions lm_options;
+  lm_options.max_iterations = lm.max_iterations;
+  lm_options.function_tolerance = lm.function_tolerance;
+  lm_options.parameter_tolerance = lm.parameter_tolerance;
+  lm_options.gradient_tolerance = lm.gradient_tolerance;
+  lm_options.loss = RobustLoss::FromName(options_.loss, options_.loss_scale);
+  const JunctionResiduals residuals{
+      observation, FloorIntrinsics{observation.fx, observation.fy, observation.cx,
+                                   observation.cy, observation.camera_height}};
+  const BoundedLmSummary lm_summary = SolveBoundedLm<4>(residuals, lm_options, lower, upper, x);
+  summary->evaluations = lm_summary.residual_evaluations;
+  summary->iterations = lm_summary.iterations;
+  summary->final_cost = lm_summary.final_cost;
+  summary->converged = lm_summary.termination == BoundedLmSummary::Termination::kConvergence;
   summary->seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (!ceres_summary.IsSolutionUsable()) {
-    return Status::ImplausibleGeometry("joint solve failed: " + ceres_summary.message);
+  if (lm_summary.termination == BoundedLmSummary::Termination::kFailure) {
+    return Status::ImplausibleGeometry(std::string("joint solve failed: ") + lm_summary.message);
   }
   summary->estimate.yaw = x[0];
   summary->estimate.pitch = x[1];

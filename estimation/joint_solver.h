@@ -4,9 +4,10 @@
 
 namespace corridor {
 
-// "joint" (beyond the paper): one Ceres Levenberg-Marquardt problem over yaw, pitch, offset and
-// width, with a JunctionLineResidual per edge point and the robust loss per point. Starts from
-// `initial` when given, else from the closed-form solution.
+// "joint" (beyond the paper): one Levenberg-Marquardt problem over yaw, pitch, offset and width,
+// with a JunctionLineResidual per edge point and the robust loss per point, solved by
+// SolveBoundedLm (the steps of Ceres's LM, without allocating). Starts from `initial` when given,
+// else from the closed-form solution.
 class JointSolver : public CorridorSolver {
  public:
   explicit JointSolver(const SolverOptions& options) : options_(options) {}

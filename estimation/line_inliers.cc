@@ -21,8 +21,15 @@ struct InlierScratch {
 }  // namespace
 
 std::vector<char> LineInlierMask(const std::vector<Eigen::Vector2d>& points) {
-  std::vector<char> keep(points.size(), 1);
-  if (points.size() < 3) return keep;
+  std::vector<char> keep;
+  LineInlierMask(points, &keep);
+  return keep;
+}
+
+void LineInlierMask(const std::vector<Eigen::Vector2d>& points, std::vector<char>* keep_out) {
+  std::vector<char>& keep = *keep_out;
+  keep.assign(points.size(), 1);
+  if (points.size() < 3) return;
   thread_local InlierScratch thread_scratch;
   InlierScratch& scratch = thread_scratch;
   std::vector<Eigen::Vector2d>& subset = scratch.subset;
@@ -34,7 +41,7 @@ std::vector<char> LineInlierMask(const std::vector<Eigen::Vector2d>& points) {
   constexpr int kRounds = 3;
   for (int round = 0; round < kRounds; ++round) {
     Eigen::Vector3d line;
-    if (!FitImageLine(subset, &line)) return keep;
+    if (!FitImageLine(subset, &line)) return;
     kept_distance.clear();
     for (size_t i = 0; i < points.size(); ++i) {
       distance[i] = std::abs(line.dot(points[i].homogeneous()));
@@ -49,11 +56,11 @@ std::vector<char> LineInlierMask(const std::vector<Eigen::Vector2d>& points) {
       next[i] = distance[i] <= threshold;
       if (next[i]) subset.push_back(points[i]);
     }
-    if (subset.size() < 2) return keep;
+    if (subset.size() < 2) return;
     if (next == keep) break;
     keep.swap(next);
   }
-  return keep;
+  return;
 }
 
 }  // namespace corridor

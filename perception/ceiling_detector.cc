@@ -24,6 +24,7 @@ struct SearchLines {
   std::vector<double> heights;    // The searched ceiling heights, m.
   int samples = 0;                // Points per line.
   std::vector<cv::Point> pixels;  // [(height * 2 + side) * samples + i]; x = -1 where not visible.
+  std::vector<double> depths;     // The points' depths along each line, m.
   int top = 0, bottom = -1;       // Rows spanned by the visible pixels (bottom < top: none).
 
   const cv::Point* Line(size_t height, int side) const {
@@ -113,14 +114,13 @@ RowProjector ChooseRowProjector(bool distorted) {
 
 // The distances of a line's samples along the corridor: `samples` from near_distance to
 // far_distance, evenly spaced in inverse distance.
-std::vector<double> SampleDepths(const CeilingDetectorOptions& o) {
-  std::vector<double> depths(o.samples);
+void SampleDepths(const CeilingDetectorOptions& o, std::vector<double>* depths) {
+  depths->resize(o.samples);
   for (int i = 0; i < o.samples; ++i) {
     const double inv = 1.0 / o.near_distance +
                        (1.0 / o.far_distance - 1.0 / o.near_distance) * i / (o.samples - 1.0);
-    depths[i] = 1.0 / inv;
+    (*depths)[i] = 1.0 / inv;
   }
-  return depths;
 }
 
 // Samples a line must count as visible at least, when judged on those in view.
@@ -138,7 +138,8 @@ void ProjectSearchLines(const Camera& camera, const CorridorGeometry& g,
     lines->heights.push_back(height);
   }
   lines->samples = o.samples;
-  const std::vector<double> depths = SampleDepths(o);
+  SampleDepths(o, &lines->depths);
+  const std::vector<double>& depths = lines->depths;
   // Every point is written below; the buffer keeps its memory from the thread's last search.
   lines->pixels.resize(lines->heights.size() * 2 * o.samples);
   lines->top = camera.image_height;
@@ -292,7 +293,8 @@ double CorridorLineSupport(const cv::Mat& bgr, const Camera& camera, const Corri
   if (bgr.empty() || !o.Check(nullptr)) return 0;
   const CorridorRotation<double> r(g.pitch, g.yaw);
   const bool distorted = camera.HasDistortion();
-  const std::vector<double> depths = SampleDepths(o);
+  std::vector<double> depths;
+  SampleDepths(o, &depths);
   std::vector<cv::Point> line(o.samples, cv::Point(-1, -1));
   int top = camera.image_height, bottom = -1;
   for (int i = 0; i < o.samples; ++i) {

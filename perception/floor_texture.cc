@@ -40,7 +40,9 @@ FloorTexture MeasureFloorTexture(const cv::Mat& dx, const cv::Mat& dy, const Gra
   const double tolerance = options.line_tolerance_deg * M_PI / 180.0;
   const double tan_tolerance = std::tan(tolerance), sin_tolerance = std::sin(tolerance);
   const double margin = options.margin;
-  std::vector<uint8_t> strong(dx.cols, 0);
+  thread_local std::vector<uint8_t> thread_strong;  // Keeps its memory from call to call.
+  std::vector<uint8_t>& strong = thread_strong;
+  strong.assign(dx.cols, 0);
   for (int j = 0; j < dx.rows; ++j) {
     const double v = grid.first_row + static_cast<double>(grid.scale) * j;
     if (!(v > vanishing_point.y() + margin)) continue;

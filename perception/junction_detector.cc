@@ -392,15 +392,19 @@ Status DetectJunctionsIn(const cv::Mat& bgr, const cv::Mat* halved,
   const PairSearch chosen = SearchPair(color, region, found, segment_options, options, result);
   const FullResolutionRefit refit =
       MakeFullResolutionRefit(color, region.scale, options, found.canny_high);
+  // The edge pixels in image coordinates, in the thread's buffer (it keeps its memory).
+  thread_local std::vector<Eigen::Vector2d> thread_edge_pixels;
+  std::vector<Eigen::Vector2d>& edge_pixels = thread_edge_pixels;
   if (chosen.left.empty() || chosen.right.empty()) {
-    return OneSideOnly(chosen, EdgePixelsInImage(region, found.edges), options, height, refit,
-                       result);
+    EdgePixelsInImage(region, found.edges, &edge_pixels);
+    return OneSideOnly(chosen, edge_pixels, options, height, refit, result);
   }
   if (chosen.pair.left < 0) {
     return NoCorridor(result, "no pair of lines meets at a vanishing point above the floor");
   }
   // The pair's final lines; the floor between them must look like a corridor's.
-  RefineChosenPair(chosen, EdgePixelsInImage(region, found.edges), options.support_distance_px,
+  EdgePixelsInImage(region, found.edges, &edge_pixels);
+  RefineChosenPair(chosen, edge_pixels, options.support_distance_px,
                    height, refit, result);
   if (options.max_floor_texture > 0 && FloorIsTextured(found, region, options, result, &why)) {
     return NoCorridor(result, why);

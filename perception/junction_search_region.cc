@@ -53,12 +53,18 @@ GradientGrid SearchRegionGrid(const JunctionSearchRegion& region) {
 std::vector<Eigen::Vector2d> EdgePixelsInImage(const JunctionSearchRegion& region,
                                                const cv::Mat& edges) {
   std::vector<Eigen::Vector2d> points;
-  points.reserve(static_cast<size_t>(cv::countNonZero(edges)));
+  EdgePixelsInImage(region, edges, &points);
+  return points;
+}
+
+void EdgePixelsInImage(const JunctionSearchRegion& region, const cv::Mat& edges,
+                       std::vector<Eigen::Vector2d>* points) {
+  points->clear();
+  points->reserve(static_cast<size_t>(cv::countNonZero(edges)));
   const int scale = region.scale, row0 = region.work_roi_top, crop_top = region.crop_top;
   ForEachEdgePixel(edges, [&](int u, int v) {
-    points.emplace_back(scale * u, scale * (v + row0) + crop_top);
+    points->emplace_back(scale * u, scale * (v + row0) + crop_top);
   });
-  return points;
 }
 
 }  // namespace corridor

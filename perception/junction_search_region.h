@@ -43,5 +43,8 @@ GradientGrid SearchRegionGrid(const JunctionSearchRegion& region);
 // The nonzero pixels of the search region's edge map in image pixels, in row-major order.
 std::vector<Eigen::Vector2d> EdgePixelsInImage(const JunctionSearchRegion& region,
                                                const cv::Mat& edges);
+// The same into *points, which keeps its memory.
+void EdgePixelsInImage(const JunctionSearchRegion& region, const cv::Mat& edges,
+                       std::vector<Eigen::Vector2d>* points);
 
 }  // namespace corridor

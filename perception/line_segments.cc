@@ -64,7 +64,8 @@ EdgeSegments DetectSegments(const cv::Mat& image, int roi_top, const SegmentOpti
     smooth = roi;
   }
   cv::Mat dx, dy;
-  std::vector<int> histogram;
+  thread_local std::vector<int> thread_histogram;  // Keeps its memory from call to call.
+  std::vector<int>& histogram = thread_histogram;
   const bool automatic = !(options.canny_high > 0);
   // The threshold is at least auto_min: the gradients below it need only be counted together.
   const int histogram_floor =

@@ -143,8 +143,11 @@ Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* res
     status = CheckPlausible(geometry, options_);
     if (!status.ok()) return finish(status);
   } else {
-    const CorridorObservation observation =
-        ObservationFromJunctions(result->junctions, camera, options_.points_per_line);
+    // The thread's observation, whose point vectors keep their memory from frame to frame.
+    thread_local CorridorObservation thread_observation;
+    const CorridorObservation& observation = thread_observation;
+    ObservationFromJunctions(result->junctions, camera, options_.points_per_line,
+                             &thread_observation);
     status = solver_->Solve(observation, nullptr, &result->solver_summary);
     result->times.solve = SecondsSince(stage);
     if (!status.ok()) {
@@ -238,9 +241,11 @@ Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* res
       !junctions.status.ok() || result->width_held || result->walls_scaled ||
           result->lower_line_taken,
       result->moved_side, options_.vertical_crossings);
-  std::string weakest;
-  result->confidence = FrameConfidence(result->evidence, &weakest);
+  result->confidence = FrameConfidence(result->evidence);
   if (result->confidence < options_.min_confidence) {
+    // The weakest factor's reason only for a refusal's message.
+    std::string weakest;
+    FrameConfidence(result->evidence, &weakest);
     std::ostringstream msg;
     msg.precision(2);
     msg << std::fixed << "confidence " << result->confidence << " is below "

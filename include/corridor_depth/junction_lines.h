@@ -47,5 +47,7 @@ struct JunctionPair {
 
 // N points evenly spaced along the line between near_end and far_end (inclusive).
 std::vector<Eigen::Vector2d> SampleAlongLine(const JunctionLine& line, int n);
+// The same into *points, which keeps its memory.
+void SampleAlongLine(const JunctionLine& line, int n, std::vector<Eigen::Vector2d>* points);
 
 }  // namespace corridor
