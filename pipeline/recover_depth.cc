@@ -200,12 +200,22 @@ Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* res
   // (within 6%: what the baseboard check needs no check for) is this frame's walls confirmed: the
   // previous frame's wider width was the wrong one, and holding it would carry the mistake on.
   // (Only a width from two junctions: with one, the previous width is already this frame's.)
+  // A frame is doubted when its own confidence (on its own geometry, before any hold) is below
+  // min_confidence, its two ceiling sides measurably disagree, or its junctions are the tracker's
+  // (found near the previous frame's, not by the frame's own search); only then may a hold that
+  // cannot tell the wrong wall from the ceiling overrule it (HoldWidth).
   const CorridorGeometry* hold_from = result->junctions.status.ok() ? previous : nullptr;
+  double own_confidence = -1;  // Set when a hold is considered.
   if (hold_from != nullptr && MuchNarrower(*hold_from, options_.max_width_change, geometry)) {
     const double disagreement =
         search_ceiling ? CeilingDisagreement(result->ceiling, geometry.camera_height) : -1;
     if (!(disagreement >= 0 && disagreement <= std::log(kCeilingSidesAgree))) {
-      HoldWidth(*hold_from, options_.max_width_change, &geometry, result);
+      own_confidence = FrameConfidence(GatherFrameEvidence(
+          result->junctions, search, geometry, disagreement, result->lower_line_taken,
+          result->moved_side, options_.vertical_crossings));
+      const bool doubted = own_confidence < options_.min_confidence || disagreement >= 0 ||
+                           result->junctions_tracked;
+      HoldWidth(*hold_from, options_.max_width_change, doubted, &geometry, result);
       if (search_ceiling) {  // The ceiling of the held walls.
         status = SearchCeiling(checks, &geometry, &result->ceiling);
         if (!status.ok()) return finish(status);
@@ -240,6 +250,14 @@ Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* res
       result->moved_side, options_.vertical_crossings);
   std::string weakest;
   result->confidence = FrameConfidence(result->evidence, &weakest);
+  if (result->width_held && own_confidence >= 0 && own_confidence < options_.min_confidence &&
+      result->confidence >= options_.min_confidence) {
+    std::ostringstream how;
+    how.precision(2);
+    how << std::fixed << "rescued by the held width: the frame's own confidence " << own_confidence
+        << " is below " << options_.min_confidence;
+    result->AddNote(how.str());
+  }
   if (result->confidence < options_.min_confidence) {
     std::ostringstream msg;
     msg.precision(2);

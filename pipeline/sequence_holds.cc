@@ -12,8 +12,8 @@ bool MuchNarrower(const CorridorGeometry& previous, double max_change, const Cor
   return max_change > 0 && previous.width > 0 && g.width < (1 - max_change) * previous.width;
 }
 
-void HoldWidth(const CorridorGeometry& previous, double max_change, CorridorGeometry* g,
-               RecoverDepthResult* result) {
+void HoldWidth(const CorridorGeometry& previous, double max_change, bool frame_doubted,
+               CorridorGeometry* g, RecoverDepthResult* result) {
   if (!MuchNarrower(previous, max_change, *g)) return;
   bool keep_left = std::abs(g->LeftDistance() - previous.LeftDistance()) <=
                    std::abs(g->RightDistance() - previous.RightDistance());
@@ -22,7 +22,7 @@ void HoldWidth(const CorridorGeometry& previous, double max_change, CorridorGeom
   // nearer the trusted one has the right wall (the camera may have moved sideways since).
   const double h = g->camera_height, trusted = previous.ceiling_height;
   const double* side = result->ceiling.side_height;
-  const char* why = "moved less since the recent frames";
+  const char* why = nullptr;
   if (trusted > h && side[0] > h && side[1] > h) {
     const double off_left = std::abs(std::log((side[0] - h) / (trusted - h)));
     const double off_right = std::abs(std::log((side[1] - h) / (trusted - h)));
@@ -33,13 +33,23 @@ void HoldWidth(const CorridorGeometry& previous, double max_change, CorridorGeom
       why = "its ceiling agrees with the trusted one";
     }
   }
-  const double kept = keep_left ? g->LeftDistance() : g->RightDistance();
-  const double other = previous.width - kept;
-  if (!(other > 0.05)) return;  // The kept wall is beyond the previous width: nothing to hold.
   std::ostringstream how;
   how.precision(2);
   how << std::fixed << "width " << g->width << " m is much narrower than the recent frames' "
-      << previous.width << " m: the " << (keep_left ? "left" : "right")
+      << previous.width << " m";
+  if (why == nullptr) {
+    if (!frame_doubted) {
+      how << ": kept (the frame's own evidence is strong and its ceiling does not say which wall "
+             "is wrong)";
+      result->AddNote(how.str());
+      return;
+    }
+    why = "moved less since the recent frames";
+  }
+  const double kept = keep_left ? g->LeftDistance() : g->RightDistance();
+  const double other = previous.width - kept;
+  if (!(other > 0.05)) return;  // The kept wall is beyond the previous width: nothing to hold.
+  how << ": the " << (keep_left ? "left" : "right")
       << " wall kept (" << why << "), the recent width held";
   g->offset = keep_left ? kept - 0.5 * previous.width : 0.5 * previous.width - kept;
   g->width = previous.width;
@@ -81,7 +91,7 @@ void ScaleWallsToCeiling(const CorridorGeometry& previous, double max_change, Co
   if (!(above_previous > 0.1) || !(above > 0.1)) return;
   const double factor = above_previous / above;
   const double width_factor = previous.width / g->width;
-  if (std::abs(std::log(factor)) <= std::log(1 + max_change) ||
+  if (factor <= 1 + max_change ||
       std::abs(std::log(width_factor / factor)) > std::log(1.15)) {
     return;
   }

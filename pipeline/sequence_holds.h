@@ -20,9 +20,14 @@ bool MuchNarrower(const CorridorGeometry& previous, double max_change, const Cor
 // side's height above the camera is off from it by more than max_change (|log ratio|: a wall put
 // too near scales its side's height by the same factor) and the other by less than half as much.
 // Otherwise (no trusted ceiling, a side without a height, no clear answer), the wall that moved
-// less since the recent frames.
-void HoldWidth(const CorridorGeometry& previous, double max_change, CorridorGeometry* g,
-               RecoverDepthResult* result);
+// less since the recent frames, but only for a frame whose own evidence is doubted
+// (`frame_doubted`: its confidence below min_confidence, or its two ceiling sides measurably
+// disagreeing): which wall moved less is a guess, and a guess does not overrule a frame whose
+// evidence is strong (a box or pillar beside the wall puts a strong line and a near face there,
+// and the held wall behind it draws far worse depth than the frame's own). Such a frame keeps its
+// width, with a note.
+void HoldWidth(const CorridorGeometry& previous, double max_change, bool frame_doubted,
+               CorridorGeometry* g, RecoverDepthResult* result);
 
 // The ceiling is as constant as the width: a frame whose ceiling is not trusted (not found, its
 // two sides too weak to compare, or disagreeing because a wall distance is wrong and so its
@@ -36,8 +41,10 @@ void HoldCeiling(const CorridorGeometry* previous, double max_disagreement, doub
 // trusted one's, with the width off by the same factor: both walls were put wrong by that factor
 // (lines inside the floor on both sides, as boxes' edges are, put both walls too near, and their
 // two ceiling sides, each scaled alike, agree with each other). The corridor's ceiling does not
-// change along it, and a corridor that narrows keeps its ceiling: both walls are scaled to the
-// trusted ceiling (result->walls_scaled).
+// change along it, and a corridor that narrows keeps its ceiling: both walls are scaled out to the
+// trusted ceiling (result->walls_scaled). Only out: lines inside the floor put walls too near,
+// never too far, so a frame wider and higher than the trusted ceiling is this frame right and the
+// trusted ceiling (from frames whose junctions were wrong alike) wrong.
 void ScaleWallsToCeiling(const CorridorGeometry& previous, double max_change, CorridorGeometry* g,
                          RecoverDepthResult* result);
 

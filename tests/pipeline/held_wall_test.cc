@@ -1,8 +1,10 @@
 // Which wall a held width keeps: the one whose ceiling, searched on its side alone, agrees with
 // the trusted ceiling carried by the sequence; without both sides' heights, the one that moved
-// less since the recent frames. Geometry worked out by hand: camera 0.5 m high, ceiling 2.5 m,
+// less since the recent frames, and that only over a doubted frame. Geometry worked out by hand: camera 0.5 m high, ceiling 2.5 m,
 // walls 1.0 m either side; this frame puts its left wall at 0.6 m (a line inside the floor), so
 // that side's ceiling comes out at 0.5 + 2.0 * 0.6 / 1.0 = 1.7 m, 0.51 (|log ratio|) off.
+#include <utility>
+
 #include <gtest/gtest.h>
 
 #include "pipeline/sequence_holds.h"
@@ -15,7 +17,7 @@ struct Held {
   RecoverDepthResult result;
 };
 
-Held HoldWithSideHeights(double left_height, double right_height) {
+Held HoldWithSideHeights(double left_height, double right_height, bool frame_doubted = true) {
   CorridorGeometry previous;  // The recent width and trusted ceiling; the camera was 0.35 m left.
   previous.camera_height = 0.5;
   previous.ceiling_height = 2.5;
@@ -25,7 +27,7 @@ Held HoldWithSideHeights(double left_height, double right_height) {
   held.geometry.SetWallDistances(0.6, 1.0);  // 1.6 m: much narrower than 2.0 m.
   held.result.ceiling.side_height[0] = left_height;
   held.result.ceiling.side_height[1] = right_height;
-  HoldWidth(previous, 0.15, &held.geometry, &held.result);
+  HoldWidth(previous, 0.15, frame_doubted, &held.geometry, &held.result);
   return held;
 }
 
@@ -54,6 +56,23 @@ TEST(HeldWallTest, SidesThatBothNearlyAgreeLeaveItToTheWallThatMovedLess) {
   const Held held = HoldWithSideHeights(2.4, 2.6);
   ASSERT_TRUE(held.result.width_held);
   EXPECT_NEAR(held.geometry.LeftDistance(), 0.6, 1e-12);
+}
+
+TEST(HeldWallTest, AConfidentFrameIsHeldOnlyWhenItsCeilingSaysWhichWall) {
+  // The frame's own evidence strong (not doubted): its ceiling's clear answer still holds it...
+  const Held answered = HoldWithSideHeights(1.7, 2.5, false);
+  ASSERT_TRUE(answered.result.width_held);
+  EXPECT_NEAR(answered.geometry.LeftDistance(), 1.0, 1e-12);
+  // ...but without one (one side not measured, or both sides nearly agreeing), which wall moved
+  // less is a guess: the frame keeps its own 1.6 m, and the note says why.
+  for (const auto& sides : {std::make_pair(0.0, 2.5), std::make_pair(2.4, 2.6)}) {
+    const Held kept = HoldWithSideHeights(sides.first, sides.second, false);
+    EXPECT_FALSE(kept.result.width_held);
+    EXPECT_DOUBLE_EQ(kept.geometry.width, 1.6);
+    EXPECT_DOUBLE_EQ(kept.geometry.LeftDistance(), 0.6);
+    EXPECT_NE(kept.result.fallback.find("own evidence is strong"), std::string::npos)
+        << kept.result.fallback;
+  }
 }
 
 }  // namespace
