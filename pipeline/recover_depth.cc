@@ -205,15 +205,20 @@ Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* res
   // (found near the previous frame's, not by the frame's own search); only then may a hold that
   // cannot tell the wrong wall from the ceiling overrule it (HoldWidth).
   const CorridorGeometry* hold_from = result->junctions.status.ok() ? previous : nullptr;
-  double own_confidence = -1;  // Set when a hold is considered.
+  double own_confidence = -1;  // Computed once, when a hold or a scaling is considered.
+  const auto own_confidence_low = [&](double disagreement) {
+    if (own_confidence < 0) {
+      own_confidence = FrameConfidence(GatherFrameEvidence(
+          result->junctions, search, geometry, disagreement, result->lower_line_taken,
+          result->moved_side, options_.vertical_crossings));
+    }
+    return own_confidence < options_.min_confidence;
+  };
   if (hold_from != nullptr && MuchNarrower(*hold_from, options_.max_width_change, geometry)) {
     const double disagreement =
         search_ceiling ? CeilingDisagreement(result->ceiling, geometry.camera_height) : -1;
     if (!(disagreement >= 0 && disagreement <= std::log(kCeilingSidesAgree))) {
-      own_confidence = FrameConfidence(GatherFrameEvidence(
-          result->junctions, search, geometry, disagreement, result->lower_line_taken,
-          result->moved_side, options_.vertical_crossings));
-      const bool doubted = own_confidence < options_.min_confidence || disagreement >= 0 ||
+      const bool doubted = own_confidence_low(disagreement) || disagreement >= 0 ||
                            result->junctions_tracked;
       HoldWidth(*hold_from, options_.max_width_change, doubted, &geometry, result);
       if (search_ceiling) {  // The ceiling of the held walls.
@@ -225,8 +230,12 @@ Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* res
   if (search_ceiling) {
     HoldCeiling(previous, options_.max_ceiling_disagreement, options_.ceiling.min_support,
                 &geometry, result);
-    if (hold_from != nullptr) {
-      ScaleWallsToCeiling(*hold_from, options_.max_ceiling_change, &geometry, result);
+    if (hold_from != nullptr &&
+        WallScaleFactor(*hold_from, options_.max_ceiling_change, geometry, *result) > 0) {
+      const bool doubted =
+          own_confidence_low(CeilingDisagreement(result->ceiling, geometry.camera_height)) ||
+          result->junctions_tracked;
+      ScaleWallsToCeiling(*hold_from, options_.max_ceiling_change, doubted, &geometry, result);
     }
   }
   result->times.ceiling = SecondsSince(stage);

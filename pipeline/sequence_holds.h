@@ -8,6 +8,13 @@ namespace corridor {
 // The sequence policy: what a frame takes from the previous frames' geometry (SequencePrior).
 // Each adds a note to result->fallback when it changes the geometry.
 
+// A junction line at least this confident (JunctionLine::confidence: boundary score times support
+// length) is strong evidence of its own: a frame whose confidence is not in doubt keeps it against
+// the sequence. Such a line mistaken for the floor's edge is a real boundary, the foot of a box or
+// a pillar whose face stands nearer than the wall: moving the wall behind it puts the layout right
+// but draws the near depth far worse than the frame's own (the face is where that depth is).
+inline constexpr double kStrongJunction = 0.75;
+
 // In a sequence, a width much narrower than the previous frame's (max_change) means that one
 // junction is wrong (a box edge or a grout line taken for it). Only a narrower width: the lines
 // mistaken for a junction lie inside the floor, while a wider width is as often the correction of
@@ -23,9 +30,8 @@ bool MuchNarrower(const CorridorGeometry& previous, double max_change, const Cor
 // less since the recent frames, but only for a frame whose own evidence is doubted
 // (`frame_doubted`: its confidence below min_confidence, or its two ceiling sides measurably
 // disagreeing): which wall moved less is a guess, and a guess does not overrule a frame whose
-// evidence is strong (a box or pillar beside the wall puts a strong line and a near face there,
-// and the held wall behind it draws far worse depth than the frame's own). Such a frame keeps its
-// width, with a note.
+// evidence is strong. Nor does a frame that is not doubted lose a strong line (kStrongJunction) to
+// the hold, whatever its ceiling says. Such a frame keeps its width, with a note.
 void HoldWidth(const CorridorGeometry& previous, double max_change, bool frame_doubted,
                CorridorGeometry* g, RecoverDepthResult* result);
 
@@ -44,8 +50,14 @@ void HoldCeiling(const CorridorGeometry* previous, double max_disagreement, doub
 // change along it, and a corridor that narrows keeps its ceiling: both walls are scaled out to the
 // trusted ceiling (result->walls_scaled). Only out: lines inside the floor put walls too near,
 // never too far, so a frame wider and higher than the trusted ceiling is this frame right and the
-// trusted ceiling (from frames whose junctions were wrong alike) wrong.
-void ScaleWallsToCeiling(const CorridorGeometry& previous, double max_change, CorridorGeometry* g,
-                         RecoverDepthResult* result);
+// trusted ceiling (from frames whose junctions were wrong alike) wrong. A frame that is not
+// doubted (`frame_doubted`, as for HoldWidth) with a strong junction line (kStrongJunction) is
+// left alone, with a note.
+// The factor ScaleWallsToCeiling would scale both walls by (above 1 + max_change); 0 when it
+// would not.
+double WallScaleFactor(const CorridorGeometry& previous, double max_change,
+                       const CorridorGeometry& g, const RecoverDepthResult& result);
+void ScaleWallsToCeiling(const CorridorGeometry& previous, double max_change, bool frame_doubted,
+                         CorridorGeometry* g, RecoverDepthResult* result);
 
 }  // namespace corridor

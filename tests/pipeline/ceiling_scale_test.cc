@@ -139,19 +139,23 @@ TEST(CeilingScaleTest, AStreamScalesTheWallsThreeFramesAtMost) {
 // recent width 2.0 m. A frame with walls at 0.6 and 0.8 m under a ceiling 1.4 m above the camera
 // (both 0.7 times the trusted) is scaled out by 2.0 / 1.4: walls 0.857 and 1.143 m. Its mirror,
 // walls at 1.2 and 1.6 m under 2.8 m (both 1.4 times), would be scaled in: lines inside the floor
-// never put walls too far, so it is left alone.
+// never put walls too far, so it is left alone. So is a frame not in doubt whose junction line is
+// strong (kStrongJunction).
 TEST(CeilingScaleTest, WallsAreScaledOutOnly) {
   CorridorGeometry previous;
   previous.camera_height = 0.5;
   previous.ceiling_height = 2.5;
   previous.SetWallDistances(1.0, 1.0);
-  const auto scale = [&](double left, double right, double ceiling, CorridorGeometry* g) {
+  const auto scale = [&](double left, double right, double ceiling, CorridorGeometry* g,
+                         double line = 0.5, bool doubted = false) {
     g->camera_height = 0.5;
     g->ceiling_height = ceiling;
     g->SetWallDistances(left, right);
     RecoverDepthResult result;
     result.ceiling_trusted = true;
-    ScaleWallsToCeiling(previous, 0.25, g, &result);
+    result.junctions.left.confidence = 0.3;
+    result.junctions.right.confidence = line;
+    ScaleWallsToCeiling(previous, 0.25, doubted, g, &result);
     return result.walls_scaled;
   };
   CorridorGeometry nearer;
@@ -164,6 +168,13 @@ TEST(CeilingScaleTest, WallsAreScaledOutOnly) {
   EXPECT_DOUBLE_EQ(farther.LeftDistance(), 1.2);
   EXPECT_DOUBLE_EQ(farther.RightDistance(), 1.6);
   EXPECT_DOUBLE_EQ(farther.ceiling_height, 3.3);
+  EXPECT_DOUBLE_EQ(WallScaleFactor(previous, 0.25, farther, RecoverDepthResult()), 0.0);
+  // A strong junction line (0.8) keeps a confident frame's walls; a doubted frame is scaled.
+  CorridorGeometry strong;
+  EXPECT_FALSE(scale(0.6, 0.8, 1.9, &strong, 0.8));
+  EXPECT_DOUBLE_EQ(strong.width, 1.4);
+  EXPECT_TRUE(scale(0.6, 0.8, 1.9, &strong, 0.8, true));
+  EXPECT_NEAR(strong.width, 2.0, 1e-12);
 }
 
 TEST(CeilingScaleTest, OptionOutsideItsRangeIsRejected) {

@@ -17,7 +17,8 @@ struct Held {
   RecoverDepthResult result;
 };
 
-Held HoldWithSideHeights(double left_height, double right_height, bool frame_doubted = true) {
+Held HoldWithSideHeights(double left_height, double right_height, bool frame_doubted = true,
+                         double left_line = 0.5) {
   CorridorGeometry previous;  // The recent width and trusted ceiling; the camera was 0.35 m left.
   previous.camera_height = 0.5;
   previous.ceiling_height = 2.5;
@@ -27,6 +28,8 @@ Held HoldWithSideHeights(double left_height, double right_height, bool frame_dou
   held.geometry.SetWallDistances(0.6, 1.0);  // 1.6 m: much narrower than 2.0 m.
   held.result.ceiling.side_height[0] = left_height;
   held.result.ceiling.side_height[1] = right_height;
+  held.result.junctions.left.confidence = left_line;
+  held.result.junctions.right.confidence = 0.5;
   HoldWidth(previous, 0.15, frame_doubted, &held.geometry, &held.result);
   return held;
 }
@@ -73,6 +76,19 @@ TEST(HeldWallTest, AConfidentFrameIsHeldOnlyWhenItsCeilingSaysWhichWall) {
     EXPECT_NE(kept.result.fallback.find("own evidence is strong"), std::string::npos)
         << kept.result.fallback;
   }
+}
+
+TEST(HeldWallTest, AConfidentFrameKeepsAStrongLine) {
+  // The ceiling says the left wall is wrong, but its line is strong (0.8, the foot of a box's
+  // face): a confident frame keeps it; a doubted one is held.
+  const Held kept = HoldWithSideHeights(1.7, 2.5, false, 0.8);
+  EXPECT_FALSE(kept.result.width_held);
+  EXPECT_DOUBLE_EQ(kept.geometry.LeftDistance(), 0.6);
+  EXPECT_NE(kept.result.fallback.find("left junction line, 0.80"), std::string::npos)
+      << kept.result.fallback;
+  const Held held = HoldWithSideHeights(1.7, 2.5, true, 0.8);
+  ASSERT_TRUE(held.result.width_held);
+  EXPECT_NEAR(held.geometry.LeftDistance(), 1.0, 1e-12);
 }
 
 }  // namespace
