@@ -218,8 +218,10 @@ Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* res
     const double disagreement =
         search_ceiling ? CeilingDisagreement(result->ceiling, geometry.camera_height) : -1;
     if (!(disagreement >= 0 && disagreement <= std::log(kCeilingSidesAgree))) {
-      const bool doubted = own_confidence_low(disagreement) || disagreement >= 0 ||
-                           result->junctions_tracked;
+      own_confidence_low(disagreement);
+      const bool doubted =
+          FrameInDoubt(own_confidence, options_.min_confidence, disagreement,
+                       std::log(kCeilingSidesAgree), result->junctions_tracked);
       HoldWidth(*hold_from, options_.max_width_change, doubted, &geometry, result);
       if (search_ceiling) {  // The ceiling of the held walls.
         status = SearchCeiling(checks, &geometry, &result->ceiling);
@@ -232,9 +234,11 @@ Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* res
                 &geometry, result);
     if (hold_from != nullptr &&
         WallScaleFactor(*hold_from, options_.max_ceiling_change, geometry, *result) > 0) {
+      const double disagreement = CeilingDisagreement(result->ceiling, geometry.camera_height);
+      own_confidence_low(disagreement);
       const bool doubted =
-          own_confidence_low(CeilingDisagreement(result->ceiling, geometry.camera_height)) ||
-          result->junctions_tracked;
+          FrameInDoubt(own_confidence, options_.min_confidence, disagreement,
+                       std::log(kCeilingSidesAgree), result->junctions_tracked);
       ScaleWallsToCeiling(*hold_from, options_.max_ceiling_change, doubted, &geometry, result);
     }
   }
@@ -259,14 +263,7 @@ Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* res
       result->moved_side, options_.vertical_crossings);
   std::string weakest;
   result->confidence = FrameConfidence(result->evidence, &weakest);
-  if (result->width_held && own_confidence >= 0 && own_confidence < options_.min_confidence &&
-      result->confidence >= options_.min_confidence) {
-    std::ostringstream how;
-    how.precision(2);
-    how << std::fixed << "rescued by the held width: the frame's own confidence " << own_confidence
-        << " is below " << options_.min_confidence;
-    result->AddNote(how.str());
-  }
+  NoteRescue(own_confidence, options_.min_confidence, result);
   if (result->confidence < options_.min_confidence) {
     std::ostringstream msg;
     msg.precision(2);

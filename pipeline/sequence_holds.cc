@@ -8,6 +8,25 @@
 
 namespace corridor {
 
+bool FrameInDoubt(double own_confidence, double min_confidence, double ceiling_disagreement,
+                  double max_disagreement, bool junctions_tracked) {
+  return own_confidence < min_confidence || ceiling_disagreement > max_disagreement ||
+         junctions_tracked;
+}
+
+bool NoteRescue(double own_confidence, double min_confidence, RecoverDepthResult* result) {
+  if (!result->width_held || !(own_confidence >= 0) || !(own_confidence < min_confidence) ||
+      !(result->confidence >= min_confidence)) {
+    return false;
+  }
+  std::ostringstream how;
+  how.precision(2);
+  how << std::fixed << "rescued by the held width: the frame's own confidence " << own_confidence
+      << " is below " << min_confidence;
+  result->AddNote(how.str());
+  return true;
+}
+
 bool MuchNarrower(const CorridorGeometry& previous, double max_change, const CorridorGeometry& g) {
   return max_change > 0 && previous.width > 0 && g.width < (1 - max_change) * previous.width;
 }

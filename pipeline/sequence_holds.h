@@ -15,6 +15,18 @@ namespace corridor {
 // but draws the near depth far worse than the frame's own (the face is where that depth is).
 inline constexpr double kStrongJunction = 0.75;
 
+// Whether a frame's own evidence is in doubt, so that the sequence may overrule it (HoldWidth,
+// ScaleWallsToCeiling): its own confidence (on its own geometry, before any hold) below
+// min_confidence, its two ceiling sides measurably disagreeing (ceiling_disagreement >= 0 and
+// above max_disagreement; -1 when they cannot be compared), or its junctions the tracker's (found
+// near the previous frame's, not by the frame's own search).
+bool FrameInDoubt(double own_confidence, double min_confidence, double ceiling_disagreement,
+                  double max_disagreement, bool junctions_tracked);
+
+// When a frame whose own confidence was below min_confidence ends with its width held and a
+// confidence at or above it, notes that the hold rescued it. True when it did.
+bool NoteRescue(double own_confidence, double min_confidence, RecoverDepthResult* result);
+
 // In a sequence, a width much narrower than the previous frame's (max_change) means that one
 // junction is wrong (a box edge or a grout line taken for it). Only a narrower width: the lines
 // mistaken for a junction lie inside the floor, while a wider width is as often the correction of

@@ -91,5 +91,35 @@ TEST(HeldWallTest, AConfidentFrameKeepsAStrongLine) {
   EXPECT_NEAR(held.geometry.LeftDistance(), 1.0, 1e-12);
 }
 
+TEST(HeldWallTest, AFrameIsInDoubtOnItsOwnConfidenceCeilingOrTrackedLines) {
+  // min_confidence 0.6; sides measurably disagreeing beyond log(1.06) = 0.058.
+  EXPECT_FALSE(FrameInDoubt(1.0, 0.6, -1, 0.058, false));   // Sides not comparable: no doubt.
+  EXPECT_FALSE(FrameInDoubt(0.6, 0.6, 0.05, 0.058, false));  // At the threshold, sides agreeing.
+  EXPECT_TRUE(FrameInDoubt(0.59, 0.6, -1, 0.058, false));
+  EXPECT_TRUE(FrameInDoubt(1.0, 0.6, 0.07, 0.058, false));
+  EXPECT_TRUE(FrameInDoubt(1.0, 0.6, -1, 0.058, true));
+}
+
+TEST(HeldWallTest, ARescuedFrameSaysSo) {
+  RecoverDepthResult result;
+  result.width_held = true;
+  result.confidence = 0.9;  // The held layout's confidence.
+  ASSERT_TRUE(NoteRescue(0.54, 0.6, &result));
+  EXPECT_NE(result.fallback.find("rescued by the held width: the frame's own confidence 0.54 is "
+                                 "below 0.60"),
+            std::string::npos)
+      << result.fallback;
+  // Not held, already confident alone, or still below the threshold: no rescue.
+  RecoverDepthResult other = result;
+  other.fallback.clear();
+  other.width_held = false;
+  EXPECT_FALSE(NoteRescue(0.54, 0.6, &other));
+  other.width_held = true;
+  EXPECT_FALSE(NoteRescue(0.8, 0.6, &other));
+  other.confidence = 0.5;
+  EXPECT_FALSE(NoteRescue(0.54, 0.6, &other));
+  EXPECT_TRUE(other.fallback.empty()) << other.fallback;
+}
+
 }  // namespace
 }  // namespace corridor
