@@ -66,6 +66,7 @@ void HoldWidth(const CorridorGeometry& previous, double max_change, bool frame_d
       how << ": kept (the frame's own evidence is strong and its " << (keep_left ? "right" : "left")
           << " junction line, " << moved_line << ", too)";
     }
+    result->width_kept = true;
     result->AddNote(how.str());
     return;
   }

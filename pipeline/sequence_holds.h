@@ -43,7 +43,8 @@ bool MuchNarrower(const CorridorGeometry& previous, double max_change, const Cor
 // (`frame_doubted`: its confidence below min_confidence, or its two ceiling sides measurably
 // disagreeing): which wall moved less is a guess, and a guess does not overrule a frame whose
 // evidence is strong. Nor does a frame that is not doubted lose a strong line (kStrongJunction) to
-// the hold, whatever its ceiling says. Such a frame keeps its width, with a note.
+// the hold, whatever its ceiling says. Such a frame keeps its width, with a note
+// (result->width_kept: the sequence does not learn that width, SequencePrior).
 void HoldWidth(const CorridorGeometry& previous, double max_change, bool frame_doubted,
                CorridorGeometry* g, RecoverDepthResult* result);
 

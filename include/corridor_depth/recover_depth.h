@@ -82,6 +82,7 @@ struct RecoverDepthResult {
   std::string fallback;            // Non-empty when the geometry is not the two junction lines' alone: how
                                    // (one junction and a known width, or the previous frame's width held).
   bool width_held = false;         // True when the recent frames' width replaced this frame's (max_width_change).
+  bool width_kept = false;         // True when a much narrower width was kept against the hold (the frame's own evidence strong); a sequence does not take it as a recent width.
   bool walls_scaled = false;       // True when both walls were scaled to the previous trusted ceiling (max_ceiling_change).
   bool ceiling_held = false;       // True when the previous frame's ceiling height replaced this frame's (max_ceiling_disagreement).
   bool junctions_tracked = false;  // True when the junctions were found near the previous frame's (TrackJunctions), not by a whole search.
