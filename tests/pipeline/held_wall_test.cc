@@ -93,7 +93,7 @@ TEST(HeldWallTest, AConfidentFrameKeepsAStrongLine) {
 
 TEST(HeldWallTest, AFrameIsInDoubtOnItsOwnConfidenceCeilingOrTrackedLines) {
   // min_confidence 0.6; sides measurably disagreeing beyond log(1.06) = 0.058.
-  EXPECT_FALSE(FrameInDoubt(1.0, 0.6, -1, 0.058, false));   // Sides not comparable: no doubt.
+  EXPECT_FALSE(FrameInDoubt(1.0, 0.6, -1, 0.058, false));    // Sides not comparable: no doubt.
   EXPECT_FALSE(FrameInDoubt(0.6, 0.6, 0.05, 0.058, false));  // At the threshold, sides agreeing.
   EXPECT_TRUE(FrameInDoubt(0.59, 0.6, -1, 0.058, false));
   EXPECT_TRUE(FrameInDoubt(1.0, 0.6, 0.07, 0.058, false));
