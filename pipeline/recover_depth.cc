@@ -203,12 +203,29 @@ Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* res
   // (within 6%: what the baseboard check needs no check for) is this frame's walls confirmed: the
   // previous frame's wider width was the wrong one, and holding it would carry the mistake on.
   // (Only a width from two junctions: with one, the previous width is already this frame's.)
+  // A frame is doubted when its own confidence (on its own geometry, before any hold) is below
+  // min_confidence, its two ceiling sides measurably disagree, or its junctions are the tracker's
+  // (found near the previous frame's, not by the frame's own search); only then may a hold that
+  // cannot tell the wrong wall from the ceiling overrule it (HoldWidth).
   const CorridorGeometry* hold_from = result->junctions.status.ok() ? previous : nullptr;
+  double own_confidence = -1;  // Computed once, when a hold or a scaling is considered.
+  const auto own_confidence_low = [&](double disagreement) {
+    if (own_confidence < 0) {
+      own_confidence = FrameConfidence(GatherFrameEvidence(
+          result->junctions, search, geometry, disagreement, result->lower_line_taken,
+          result->moved_side, options_.vertical_crossings));
+    }
+    return own_confidence < options_.min_confidence;
+  };
   if (hold_from != nullptr && MuchNarrower(*hold_from, options_.max_width_change, geometry)) {
     const double disagreement =
         search_ceiling ? CeilingDisagreement(result->ceiling, geometry.camera_height) : -1;
     if (!(disagreement >= 0 && disagreement <= std::log(kCeilingSidesAgree))) {
-      HoldWidth(*hold_from, options_.max_width_change, &geometry, result);
+      own_confidence_low(disagreement);
+      const bool doubted =
+          FrameInDoubt(own_confidence, options_.min_confidence, disagreement,
+                       std::log(kCeilingSidesAgree), result->junctions_tracked);
+      HoldWidth(*hold_from, options_.max_width_change, doubted, &geometry, result);
       if (search_ceiling) {  // The ceiling of the held walls.
         status = SearchCeiling(checks, &geometry, &result->ceiling);
         if (!status.ok()) return finish(status);
@@ -218,8 +235,14 @@ Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* res
   if (search_ceiling) {
     HoldCeiling(previous, options_.max_ceiling_disagreement, options_.ceiling.min_support,
                 &geometry, result);
-    if (hold_from != nullptr) {
-      ScaleWallsToCeiling(*hold_from, options_.max_ceiling_change, &geometry, result);
+    if (hold_from != nullptr &&
+        WallScaleFactor(*hold_from, options_.max_ceiling_change, geometry, *result) > 0) {
+      const double disagreement = CeilingDisagreement(result->ceiling, geometry.camera_height);
+      own_confidence_low(disagreement);
+      const bool doubted =
+          FrameInDoubt(own_confidence, options_.min_confidence, disagreement,
+                       std::log(kCeilingSidesAgree), result->junctions_tracked);
+      ScaleWallsToCeiling(*hold_from, options_.max_ceiling_change, doubted, &geometry, result);
     }
   }
   result->times.ceiling = SecondsSince(stage);
@@ -242,6 +265,7 @@ Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* res
           result->lower_line_taken,
       result->moved_side, options_.vertical_crossings);
   result->confidence = FrameConfidence(result->evidence);
+  NoteRescue(own_confidence, options_.min_confidence, result);
   if (result->confidence < options_.min_confidence) {
     // The weakest factor's reason only for a refusal's message.
     std::string weakest;

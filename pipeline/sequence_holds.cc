@@ -8,12 +8,31 @@
 
 namespace corridor {
 
+bool FrameInDoubt(double own_confidence, double min_confidence, double ceiling_disagreement,
+                  double max_disagreement, bool junctions_tracked) {
+  return own_confidence < min_confidence || ceiling_disagreement > max_disagreement ||
+         junctions_tracked;
+}
+
+bool NoteRescue(double own_confidence, double min_confidence, RecoverDepthResult* result) {
+  if (!result->width_held || !(own_confidence >= 0) || !(own_confidence < min_confidence) ||
+      !(result->confidence >= min_confidence)) {
+    return false;
+  }
+  std::ostringstream how;
+  how.precision(2);
+  how << std::fixed << "rescued by the held width: the frame's own confidence " << own_confidence
+      << " is below " << min_confidence;
+  result->AddNote(how.str());
+  return true;
+}
+
 bool MuchNarrower(const CorridorGeometry& previous, double max_change, const CorridorGeometry& g) {
   return max_change > 0 && previous.width > 0 && g.width < (1 - max_change) * previous.width;
 }
 
-void HoldWidth(const CorridorGeometry& previous, double max_change, CorridorGeometry* g,
-               RecoverDepthResult* result) {
+void HoldWidth(const CorridorGeometry& previous, double max_change, bool frame_doubted,
+               CorridorGeometry* g, RecoverDepthResult* result) {
   if (!MuchNarrower(previous, max_change, *g)) return;
   bool keep_left = std::abs(g->LeftDistance() - previous.LeftDistance()) <=
                    std::abs(g->RightDistance() - previous.RightDistance());
@@ -22,7 +41,7 @@ void HoldWidth(const CorridorGeometry& previous, double max_change, CorridorGeom
   // nearer the trusted one has the right wall (the camera may have moved sideways since).
   const double h = g->camera_height, trusted = previous.ceiling_height;
   const double* side = result->ceiling.side_height;
-  const char* why = "moved less since the recent frames";
+  const char* why = nullptr;
   if (trusted > h && side[0] > h && side[1] > h) {
     const double off_left = std::abs(std::log((side[0] - h) / (trusted - h)));
     const double off_right = std::abs(std::log((side[1] - h) / (trusted - h)));
@@ -33,13 +52,29 @@ void HoldWidth(const CorridorGeometry& previous, double max_change, CorridorGeom
       why = "its ceiling agrees with the trusted one";
     }
   }
-  const double kept = keep_left ? g->LeftDistance() : g->RightDistance();
-  const double other = previous.width - kept;
-  if (!(other > 0.05)) return;  // The kept wall is beyond the previous width: nothing to hold.
   std::ostringstream how;
   how.precision(2);
   how << std::fixed << "width " << g->width << " m is much narrower than the recent frames' "
-      << previous.width << " m: the " << (keep_left ? "left" : "right")
+      << previous.width << " m";
+  const double moved_line =
+      (keep_left ? result->junctions.right : result->junctions.left).confidence;
+  if (!frame_doubted && (why == nullptr || moved_line >= kStrongJunction)) {
+    if (why == nullptr) {
+      how << ": kept (the frame's own evidence is strong and its ceiling does not say which wall "
+             "is wrong)";
+    } else {
+      how << ": kept (the frame's own evidence is strong and its " << (keep_left ? "right" : "left")
+          << " junction line, " << moved_line << ", too)";
+    }
+    result->width_kept = true;
+    result->AddNote(how.str());
+    return;
+  }
+  if (why == nullptr) why = "moved less since the recent frames";
+  const double kept = keep_left ? g->LeftDistance() : g->RightDistance();
+  const double other = previous.width - kept;
+  if (!(other > 0.05)) return;  // The kept wall is beyond the previous width: nothing to hold.
+  how << ": the " << (keep_left ? "left" : "right")
       << " wall kept (" << why << "), the recent width held";
   g->offset = keep_left ? kept - 0.5 * previous.width : 0.5 * previous.width - kept;
   g->width = previous.width;
@@ -70,25 +105,40 @@ void HoldCeiling(const CorridorGeometry* previous, double max_disagreement, doub
   result->AddNote(how.str());
 }
 
-void ScaleWallsToCeiling(const CorridorGeometry& previous, double max_change, CorridorGeometry* g,
-                         RecoverDepthResult* result) {
-  if (!(max_change > 0) || !previous.HasCeiling() || !result->ceiling_trusted ||
-      result->width_held || !(previous.width > 0) || !(g->width > 0)) {
-    return;
+double WallScaleFactor(const CorridorGeometry& previous, double max_change,
+                       const CorridorGeometry& g, const RecoverDepthResult& result) {
+  if (!(max_change > 0) || !previous.HasCeiling() || !result.ceiling_trusted ||
+      result.width_held || !(previous.width > 0) || !(g.width > 0)) {
+    return 0;
   }
-  const double above_previous = previous.ceiling_height - g->camera_height;
-  const double above = g->ceiling_height - g->camera_height;
-  if (!(above_previous > 0.1) || !(above > 0.1)) return;
+  const double above_previous = previous.ceiling_height - g.camera_height;
+  const double above = g.ceiling_height - g.camera_height;
+  if (!(above_previous > 0.1) || !(above > 0.1)) return 0;
   const double factor = above_previous / above;
-  const double width_factor = previous.width / g->width;
-  if (std::abs(std::log(factor)) <= std::log(1 + max_change) ||
-      std::abs(std::log(width_factor / factor)) > std::log(1.15)) {
-    return;
+  const double width_factor = previous.width / g.width;
+  if (factor <= 1 + max_change || std::abs(std::log(width_factor / factor)) > std::log(1.15)) {
+    return 0;
   }
+  return factor;
+}
+
+void ScaleWallsToCeiling(const CorridorGeometry& previous, double max_change, bool frame_doubted,
+                         CorridorGeometry* g, RecoverDepthResult* result) {
+  const double factor = WallScaleFactor(previous, max_change, *g, *result);
+  if (factor == 0) return;
   std::ostringstream how;
   how.precision(2);
-  how << std::fixed << "both walls scaled " << factor << "x: both ceiling sides at "
-      << g->ceiling_height << " m against the previous frame's " << previous.ceiling_height
+  how << std::fixed;
+  const double strongest =
+      std::max(result->junctions.left.confidence, result->junctions.right.confidence);
+  if (!frame_doubted && strongest >= kStrongJunction) {
+    how << "walls not scaled " << factor << "x to the previous frame's ceiling: the frame's own "
+        << "evidence is strong and a junction line, " << strongest << ", too";
+    result->AddNote(how.str());
+    return;
+  }
+  how << "both walls scaled " << factor << "x: both ceiling sides at " << g->ceiling_height
+      << " m against the previous frame's " << previous.ceiling_height
       << " m (and the width alike): both junctions wrong alike";
   g->SetWallDistances(factor * g->LeftDistance(), factor * g->RightDistance());
   g->ceiling_height = previous.ceiling_height;

@@ -8,6 +8,25 @@ namespace corridor {
 // The sequence policy: what a frame takes from the previous frames' geometry (SequencePrior).
 // Each adds a note to result->fallback when it changes the geometry.
 
+// A junction line at least this confident (JunctionLine::confidence: boundary score times support
+// length) is strong evidence of its own: a frame whose confidence is not in doubt keeps it against
+// the sequence. Such a line mistaken for the floor's edge is a real boundary, the foot of a box or
+// a pillar whose face stands nearer than the wall: moving the wall behind it puts the layout right
+// but draws the near depth far worse than the frame's own (the face is where that depth is).
+inline constexpr double kStrongJunction = 0.75;
+
+// Whether a frame's own evidence is in doubt, so that the sequence may overrule it (HoldWidth,
+// ScaleWallsToCeiling): its own confidence (on its own geometry, before any hold) below
+// min_confidence, its two ceiling sides measurably disagreeing (ceiling_disagreement >= 0 and
+// above max_disagreement; -1 when they cannot be compared), or its junctions the tracker's (found
+// near the previous frame's, not by the frame's own search).
+bool FrameInDoubt(double own_confidence, double min_confidence, double ceiling_disagreement,
+                  double max_disagreement, bool junctions_tracked);
+
+// When a frame whose own confidence was below min_confidence ends with its width held and a
+// confidence at or above it, notes that the hold rescued it. True when it did.
+bool NoteRescue(double own_confidence, double min_confidence, RecoverDepthResult* result);
+
 // In a sequence, a width much narrower than the previous frame's (max_change) means that one
 // junction is wrong (a box edge or a grout line taken for it). Only a narrower width: the lines
 // mistaken for a junction lie inside the floor, while a wider width is as often the correction of
@@ -20,9 +39,14 @@ bool MuchNarrower(const CorridorGeometry& previous, double max_change, const Cor
 // side's height above the camera is off from it by more than max_change (|log ratio|: a wall put
 // too near scales its side's height by the same factor) and the other by less than half as much.
 // Otherwise (no trusted ceiling, a side without a height, no clear answer), the wall that moved
-// less since the recent frames.
-void HoldWidth(const CorridorGeometry& previous, double max_change, CorridorGeometry* g,
-               RecoverDepthResult* result);
+// less since the recent frames, but only for a frame whose own evidence is doubted
+// (`frame_doubted`: its confidence below min_confidence, or its two ceiling sides measurably
+// disagreeing): which wall moved less is a guess, and a guess does not overrule a frame whose
+// evidence is strong. Nor does a frame that is not doubted lose a strong line (kStrongJunction) to
+// the hold, whatever its ceiling says. Such a frame keeps its width, with a note
+// (result->width_kept: the sequence does not learn that width, SequencePrior).
+void HoldWidth(const CorridorGeometry& previous, double max_change, bool frame_doubted,
+               CorridorGeometry* g, RecoverDepthResult* result);
 
 // The ceiling is as constant as the width: a frame whose ceiling is not trusted (not found, its
 // two sides too weak to compare, or disagreeing because a wall distance is wrong and so its
@@ -36,9 +60,17 @@ void HoldCeiling(const CorridorGeometry* previous, double max_disagreement, doub
 // trusted one's, with the width off by the same factor: both walls were put wrong by that factor
 // (lines inside the floor on both sides, as boxes' edges are, put both walls too near, and their
 // two ceiling sides, each scaled alike, agree with each other). The corridor's ceiling does not
-// change along it, and a corridor that narrows keeps its ceiling: both walls are scaled to the
-// trusted ceiling (result->walls_scaled).
-void ScaleWallsToCeiling(const CorridorGeometry& previous, double max_change, CorridorGeometry* g,
-                         RecoverDepthResult* result);
+// change along it, and a corridor that narrows keeps its ceiling: both walls are scaled out to the
+// trusted ceiling (result->walls_scaled). Only out: lines inside the floor put walls too near,
+// never too far, so a frame wider and higher than the trusted ceiling is this frame right and the
+// trusted ceiling (from frames whose junctions were wrong alike) wrong. A frame that is not
+// doubted (`frame_doubted`, as for HoldWidth) with a strong junction line (kStrongJunction) is
+// left alone, with a note.
+// The factor ScaleWallsToCeiling would scale both walls by (above 1 + max_change); 0 when it
+// would not.
+double WallScaleFactor(const CorridorGeometry& previous, double max_change,
+                       const CorridorGeometry& g, const RecoverDepthResult& result);
+void ScaleWallsToCeiling(const CorridorGeometry& previous, double max_change, bool frame_doubted,
+                         CorridorGeometry* g, RecoverDepthResult* result);
 
 }  // namespace corridor

@@ -17,7 +17,9 @@ namespace corridor {
 // it. Held kMaxHeld frames in a row (or its walls scaled to its trusted ceiling,
 // max_ceiling_change), the width is let go for one frame and the recent widths start again from
 // it: the corridor may really have narrowed, or the held width (the trusted ceiling) was the
-// wrong one.
+// wrong one. A much narrower width a frame kept against the hold (its own evidence strong,
+// RecoverDepthResult::width_kept) counts as held here: that frame keeps it, the sequence does not
+// learn it (one box's foot would otherwise pull the recent width down for five frames).
 // Its ceiling height is the last one whose two sides agreed (RecoverDepthResult::ceiling_trusted),
 // or none: only such a height is held over a frame whose sides disagree. But when at least
 // kMinRecentCeilings of the last kRecent frames' own heights (measured, not held) have a median above the
@@ -55,9 +57,10 @@ class SequencePrior {
     previous_ = result.geometry;
     previous_.ceiling_height = trusted;
     has_previous_ = true;
-    held_ = result.width_held || result.walls_scaled ? held_ + 1 : 0;
+    const bool not_measured = result.width_held || result.walls_scaled || result.width_kept;
+    held_ = not_measured ? held_ + 1 : 0;
     if (let_go) widths_.clear();
-    if (!result.width_held && !result.walls_scaled) PushRecent(result.geometry.width, &widths_);
+    if (!not_measured) PushRecent(result.geometry.width, &widths_);
     if (!widths_.empty()) previous_.width = Median(widths_);
   }
 

@@ -44,8 +44,9 @@ struct RecoverDepthOptions {
   InnerLineCheckOptions inner_line;            // That check's thresholds.
   double width_prior = 0.0;                    // Width for frames where one junction is hidden, m (0 = none; a sequence uses the previous frame's).
   double max_width_change = 0.15;              // In a sequence, a width this much (relative) narrower than the recent frames' (median of the last 5 measured) means one junction is
-                                               // wrong (a box edge or grout line taken for it): that width is held from the wall that moved less (0 = off),
-                                               // after the ceiling's checks, unless the frame's two ceiling junctions agree within 6% (its walls confirmed).
+                                               // wrong (a box edge or grout line taken for it): that width is held from one wall (0 = off), after the ceiling's
+                                               // checks, unless the frame's two ceiling junctions agree within 6% (its walls confirmed); a frame whose own
+                                               // evidence is not in doubt is held only on its ceiling's word, never over a strong line (pipeline/sequence_holds.h).
   double max_ceiling_disagreement = 0.10;      // In a sequence, a ceiling not found, or whose two sides' heights above the camera differ by more than this
                                                // (|log ratio|; a wall distance is wrong), is replaced by the previous frame's height (0 = off).
   double max_ceiling_change = 0.25;            // In a sequence, a ceiling whose two sides agree but whose height above the camera is more than this
@@ -81,6 +82,7 @@ struct RecoverDepthResult {
   std::string fallback;            // Non-empty when the geometry is not the two junction lines' alone: how
                                    // (one junction and a known width, or the previous frame's width held).
   bool width_held = false;         // True when the recent frames' width replaced this frame's (max_width_change).
+  bool width_kept = false;         // True when a much narrower width was kept against the hold (the frame's own evidence strong); a sequence does not take it as a recent width.
   bool walls_scaled = false;       // True when both walls were scaled to the previous trusted ceiling (max_ceiling_change).
   bool ceiling_held = false;       // True when the previous frame's ceiling height replaced this frame's (max_ceiling_disagreement).
   bool junctions_tracked = false;  // True when the junctions were found near the previous frame's (TrackJunctions), not by a whole search.

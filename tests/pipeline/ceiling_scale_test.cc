@@ -3,13 +3,14 @@
 // frame's by the same factor, both walls are taken to be wrong by it. A rendered corridor, seen
 // right, against a previous geometry 1.4 times as large (the mirror of a frame whose walls were
 // both put 1.4 times too near): its walls are scaled out by the factor of the heights above the
-// camera, computed here by hand. A narrower corridor under the same ceiling, or a higher ceiling
-// over the same width, is left alone.
+// camera, computed here by hand. A narrower corridor under the same ceiling, a higher ceiling
+// over the same width, or walls and ceiling both farther than the trusted ones, are left alone.
 #include <cmath>
 
 #include <gtest/gtest.h>
 
 #include "pipeline/frame_pipeline.h"
+#include "pipeline/sequence_holds.h"
 #include "corridor_depth/recover_depth.h"
 #include "synth/presets.h"
 #include "tests/support/corridor_frame.h"
@@ -132,6 +133,48 @@ TEST(CeilingScaleTest, AStreamScalesTheWallsThreeFramesAtMost) {
   for (int i = 3; i <= 5; ++i) {
     EXPECT_NEAR(widths[i], s.frame.truth.width, 0.02 * s.frame.truth.width) << i;
   }
+}
+
+// ScaleWallsToCeiling alone, by hand: the trusted ceiling 2.0 m above a camera 0.5 m high, the
+// recent width 2.0 m. A frame with walls at 0.6 and 0.8 m under a ceiling 1.4 m above the camera
+// (both 0.7 times the trusted) is scaled out by 2.0 / 1.4: walls 0.857 and 1.143 m. Its mirror,
+// walls at 1.2 and 1.6 m under 2.8 m (both 1.4 times), would be scaled in: lines inside the floor
+// never put walls too far, so it is left alone. So is a frame not in doubt whose junction line is
+// strong (kStrongJunction).
+TEST(CeilingScaleTest, WallsAreScaledOutOnly) {
+  CorridorGeometry previous;
+  previous.camera_height = 0.5;
+  previous.ceiling_height = 2.5;
+  previous.SetWallDistances(1.0, 1.0);
+  const auto scale = [&](double left, double right, double ceiling, CorridorGeometry* g,
+                         double line = 0.5, bool doubted = false) {
+    g->camera_height = 0.5;
+    g->ceiling_height = ceiling;
+    g->SetWallDistances(left, right);
+    RecoverDepthResult result;
+    result.ceiling_trusted = true;
+    result.junctions.left.confidence = 0.3;
+    result.junctions.right.confidence = line;
+    ScaleWallsToCeiling(previous, 0.25, doubted, g, &result);
+    return result.walls_scaled;
+  };
+  CorridorGeometry nearer;
+  ASSERT_TRUE(scale(0.6, 0.8, 1.9, &nearer));
+  EXPECT_NEAR(nearer.LeftDistance(), 0.6 * 2.0 / 1.4, 1e-12);
+  EXPECT_NEAR(nearer.RightDistance(), 0.8 * 2.0 / 1.4, 1e-12);
+  EXPECT_DOUBLE_EQ(nearer.ceiling_height, 2.5);
+  CorridorGeometry farther;
+  EXPECT_FALSE(scale(1.2, 1.6, 3.3, &farther));
+  EXPECT_DOUBLE_EQ(farther.LeftDistance(), 1.2);
+  EXPECT_DOUBLE_EQ(farther.RightDistance(), 1.6);
+  EXPECT_DOUBLE_EQ(farther.ceiling_height, 3.3);
+  EXPECT_DOUBLE_EQ(WallScaleFactor(previous, 0.25, farther, RecoverDepthResult()), 0.0);
+  // A strong junction line (0.8) keeps a confident frame's walls; a doubted frame is scaled.
+  CorridorGeometry strong;
+  EXPECT_FALSE(scale(0.6, 0.8, 1.9, &strong, 0.8));
+  EXPECT_DOUBLE_EQ(strong.width, 1.4);
+  EXPECT_TRUE(scale(0.6, 0.8, 1.9, &strong, 0.8, true));
+  EXPECT_NEAR(strong.width, 2.0, 1e-12);
 }
 
 TEST(CeilingScaleTest, OptionOutsideItsRangeIsRejected) {

@@ -1,8 +1,10 @@
 // Which wall a held width keeps: the one whose ceiling, searched on its side alone, agrees with
 // the trusted ceiling carried by the sequence; without both sides' heights, the one that moved
-// less since the recent frames. Geometry worked out by hand: camera 0.5 m high, ceiling 2.5 m,
+// less since the recent frames, and that only over a doubted frame. Geometry worked out by hand: camera 0.5 m high, ceiling 2.5 m,
 // walls 1.0 m either side; this frame puts its left wall at 0.6 m (a line inside the floor), so
 // that side's ceiling comes out at 0.5 + 2.0 * 0.6 / 1.0 = 1.7 m, 0.51 (|log ratio|) off.
+#include <utility>
+
 #include <gtest/gtest.h>
 
 #include "pipeline/sequence_holds.h"
@@ -15,7 +17,8 @@ struct Held {
   RecoverDepthResult result;
 };
 
-Held HoldWithSideHeights(double left_height, double right_height) {
+Held HoldWithSideHeights(double left_height, double right_height, bool frame_doubted = true,
+                         double left_line = 0.5) {
   CorridorGeometry previous;  // The recent width and trusted ceiling; the camera was 0.35 m left.
   previous.camera_height = 0.5;
   previous.ceiling_height = 2.5;
@@ -25,7 +28,9 @@ Held HoldWithSideHeights(double left_height, double right_height) {
   held.geometry.SetWallDistances(0.6, 1.0);  // 1.6 m: much narrower than 2.0 m.
   held.result.ceiling.side_height[0] = left_height;
   held.result.ceiling.side_height[1] = right_height;
-  HoldWidth(previous, 0.15, &held.geometry, &held.result);
+  held.result.junctions.left.confidence = left_line;
+  held.result.junctions.right.confidence = 0.5;
+  HoldWidth(previous, 0.15, frame_doubted, &held.geometry, &held.result);
   return held;
 }
 
@@ -54,6 +59,66 @@ TEST(HeldWallTest, SidesThatBothNearlyAgreeLeaveItToTheWallThatMovedLess) {
   const Held held = HoldWithSideHeights(2.4, 2.6);
   ASSERT_TRUE(held.result.width_held);
   EXPECT_NEAR(held.geometry.LeftDistance(), 0.6, 1e-12);
+}
+
+TEST(HeldWallTest, AConfidentFrameIsHeldOnlyWhenItsCeilingSaysWhichWall) {
+  // The frame's own evidence strong (not doubted): its ceiling's clear answer still holds it...
+  const Held answered = HoldWithSideHeights(1.7, 2.5, false);
+  ASSERT_TRUE(answered.result.width_held);
+  EXPECT_NEAR(answered.geometry.LeftDistance(), 1.0, 1e-12);
+  // ...but without one (one side not measured, or both sides nearly agreeing), which wall moved
+  // less is a guess: the frame keeps its own 1.6 m, and the note says why.
+  for (const auto& sides : {std::make_pair(0.0, 2.5), std::make_pair(2.4, 2.6)}) {
+    const Held kept = HoldWithSideHeights(sides.first, sides.second, false);
+    EXPECT_FALSE(kept.result.width_held);
+    EXPECT_DOUBLE_EQ(kept.geometry.width, 1.6);
+    EXPECT_DOUBLE_EQ(kept.geometry.LeftDistance(), 0.6);
+    EXPECT_NE(kept.result.fallback.find("own evidence is strong"), std::string::npos)
+        << kept.result.fallback;
+  }
+}
+
+TEST(HeldWallTest, AConfidentFrameKeepsAStrongLine) {
+  // The ceiling says the left wall is wrong, but its line is strong (0.8, the foot of a box's
+  // face): a confident frame keeps it; a doubted one is held.
+  const Held kept = HoldWithSideHeights(1.7, 2.5, false, 0.8);
+  EXPECT_FALSE(kept.result.width_held);
+  EXPECT_DOUBLE_EQ(kept.geometry.LeftDistance(), 0.6);
+  EXPECT_NE(kept.result.fallback.find("left junction line, 0.80"), std::string::npos)
+      << kept.result.fallback;
+  const Held held = HoldWithSideHeights(1.7, 2.5, true, 0.8);
+  ASSERT_TRUE(held.result.width_held);
+  EXPECT_NEAR(held.geometry.LeftDistance(), 1.0, 1e-12);
+}
+
+TEST(HeldWallTest, AFrameIsInDoubtOnItsOwnConfidenceCeilingOrTrackedLines) {
+  // min_confidence 0.6; sides measurably disagreeing beyond log(1.06) = 0.058.
+  EXPECT_FALSE(FrameInDoubt(1.0, 0.6, -1, 0.058, false));    // Sides not comparable: no doubt.
+  EXPECT_FALSE(FrameInDoubt(0.6, 0.6, 0.05, 0.058, false));  // At the threshold, sides agreeing.
+  EXPECT_TRUE(FrameInDoubt(0.59, 0.6, -1, 0.058, false));
+  EXPECT_TRUE(FrameInDoubt(1.0, 0.6, 0.07, 0.058, false));
+  EXPECT_TRUE(FrameInDoubt(1.0, 0.6, -1, 0.058, true));
+}
+
+TEST(HeldWallTest, ARescuedFrameSaysSo) {
+  RecoverDepthResult result;
+  result.width_held = true;
+  result.confidence = 0.9;  // The held layout's confidence.
+  ASSERT_TRUE(NoteRescue(0.54, 0.6, &result));
+  EXPECT_NE(result.fallback.find("rescued by the held width: the frame's own confidence 0.54 is "
+                                 "below 0.60"),
+            std::string::npos)
+      << result.fallback;
+  // Not held, already confident alone, or still below the threshold: no rescue.
+  RecoverDepthResult other = result;
+  other.fallback.clear();
+  other.width_held = false;
+  EXPECT_FALSE(NoteRescue(0.54, 0.6, &other));
+  other.width_held = true;
+  EXPECT_FALSE(NoteRescue(0.8, 0.6, &other));
+  other.confidence = 0.5;
+  EXPECT_FALSE(NoteRescue(0.54, 0.6, &other));
+  EXPECT_TRUE(other.fallback.empty()) << other.fallback;
 }
 
 }  // namespace

@@ -45,6 +45,20 @@ TEST(SequencePriorTest, HeldWidthsAreNotRecentWidths) {
   EXPECT_DOUBLE_EQ(prior.Previous()->width, 2.0);  // {2.0, 2.2}: the lower middle.
 }
 
+TEST(SequencePriorTest, KeptNarrowWidthsAreNotRecentWidths) {
+  SequencePrior prior;
+  prior.Update(Frame(2.6));
+  prior.Update(Frame(2.5));
+  RecoverDepthResult kept = Frame(2.0);  // Much narrower, kept by a confident frame.
+  kept.width_kept = true;
+  prior.Update(kept);
+  EXPECT_DOUBLE_EQ(prior.Previous()->width, 2.5);  // {2.5, 2.6}: the 2.0 is not recorded.
+  prior.Update(Frame(2.4));
+  EXPECT_DOUBLE_EQ(prior.Previous()->width, 2.5);  // {2.4, 2.5, 2.6}; with 2.0: 2.4.
+  for (int i = 0; i < SequencePrior::kMaxHeld; ++i) prior.Update(kept);
+  EXPECT_EQ(prior.Previous(), nullptr);  // Kept three in a row: let go, as held widths are.
+}
+
 TEST(SequencePriorTest, ALetGoWidthStartsTheRecentWidthsAgain) {
   SequencePrior prior;
   for (int i = 0; i < 3; ++i) prior.Update(Frame(3.0));
