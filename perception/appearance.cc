@@ -49,22 +49,33 @@ bool Mean3x3(const cv::Mat& bgr, const Eigen::Vector2d& p, int roi_top, int spac
   return true;
 }
 
+// The pixels of `bgr` in 8-bit Lab, into `lab` (its memory kept from call to call).
+void BgrToLabInto(const std::vector<cv::Vec3b>& bgr, std::vector<cv::Vec3b>* lab) {
+  lab->resize(bgr.size());
+  if (bgr.empty()) return;
+  // One row of pixels, converted in place of the whole image's conversion.
+  const cv::Mat in(1, static_cast<int>(bgr.size()), CV_8UC3, const_cast<cv::Vec3b*>(bgr.data()));
+  cv::Mat out(1, static_cast<int>(lab->size()), CV_8UC3, lab->data());
+  cv::cvtColor(in, out, cv::COLOR_BGR2Lab);
+  CV_Assert(out.data == reinterpret_cast<uchar*>(lab->data()));
+}
+
 // The median Lab colour of 8-bit BGR pixels and their median distance to it (at least 1).
 FloorAppearance AppearanceOf(const std::vector<cv::Vec3b>& patch) {
   // Each channel's median (the middle element, as Median takes it) from a count of its 256
   // values instead of a partial sort.
   std::array<std::array<int, 256>, 3> counts{};
-  std::vector<cv::Vec3f> pixels;
-  pixels.reserve(patch.size());
-  for (const cv::Vec3b& lab : BgrToLab(patch)) {
-    pixels.push_back(cv::Vec3f(lab));
-    for (int c = 0; c < 3; ++c) ++counts[c][lab[c]];
+  // The thread's buffers, kept from frame to frame.
+  thread_local std::vector<cv::Vec3b> lab;
+  thread_local std::vector<float> distances;
+  BgrToLabInto(patch, &lab);
+  for (const cv::Vec3b& pixel : lab) {
+    for (int c = 0; c < 3; ++c) ++counts[c][pixel[c]];
   }
   FloorAppearance floor;
-  for (int c = 0; c < 3; ++c) floor.lab[c] = MiddleByte(counts[c], pixels.size());
-  std::vector<float> distances;
-  distances.reserve(pixels.size());
-  for (const auto& p : pixels) distances.push_back(LabDistance(p, floor.lab));
+  for (int c = 0; c < 3; ++c) floor.lab[c] = MiddleByte(counts[c], lab.size());
+  distances.clear();
+  for (const cv::Vec3b& pixel : lab) distances.push_back(LabDistance(cv::Vec3f(pixel), floor.lab));
   floor.spread = std::max(1.0f, Median(&distances));
   return floor;
 }
@@ -78,14 +89,13 @@ double Likeness(const cv::Vec3f& lab, const FloorAppearance& floor) {
 }
 
 // The 3x3 patches (pixels `scale` apart, 9 per usable sample) centred `offset` times `scale` px
-// from 24 points along `line`: below it for offset > 0, above for offset < 0.
-std::vector<cv::Vec3b> StripPatches(const cv::Mat& bgr, const MergedLine& line, int roi_top,
-                                    int scale, double offset) {
+// from 24 points along `line`: below it for offset > 0, above for offset < 0; into `patches`.
+void StripPatches(const cv::Mat& bgr, const MergedLine& line, int roi_top, int scale,
+                  double offset, std::vector<cv::Vec3b>* patches) {
   const Eigen::Vector2d normal = line.line.head<2>();  // Points down (toward the floor).
   const int samples = 24;
   const int spacing = std::max(1, scale);
-  std::vector<cv::Vec3b> patches;
-  patches.reserve(samples * 9);
+  patches->clear();
   for (int i = 0; i < samples; ++i) {
     const Eigen::Vector2d p = line.start + (line.end - line.start) * ((i + 0.5) / samples);
     const Eigen::Vector2d q = p + offset * spacing * normal;
@@ -93,11 +103,10 @@ std::vector<cv::Vec3b> StripPatches(const cv::Mat& bgr, const MergedLine& line, 
     if (u < spacing || v < spacing || u >= bgr.cols - spacing || v >= bgr.rows - spacing) continue;
     for (int dv = -spacing; dv <= spacing; dv += spacing) {
       for (int du = -spacing; du <= spacing; du += spacing) {
-        patches.push_back(bgr.at<cv::Vec3b>(v + dv, u + du));
+        patches->push_back(bgr.at<cv::Vec3b>(v + dv, u + du));
       }
     }
   }
-  return patches;
 }
 
 }  // namespace
@@ -109,13 +118,8 @@ float LabDistance(const cv::Vec3f& a, const cv::Vec3f& b) {
 }
 
 std::vector<cv::Vec3b> BgrToLab(const std::vector<cv::Vec3b>& bgr) {
-  std::vector<cv::Vec3b> lab(bgr.size());
-  if (bgr.empty()) return lab;
-  // One row of pixels, converted in place of the whole image's conversion.
-  const cv::Mat in(1, static_cast<int>(bgr.size()), CV_8UC3, const_cast<cv::Vec3b*>(bgr.data()));
-  cv::Mat out(1, static_cast<int>(lab.size()), CV_8UC3, lab.data());
-  cv::cvtColor(in, out, cv::COLOR_BGR2Lab);
-  CV_Assert(out.data == reinterpret_cast<uchar*>(lab.data()));
+  std::vector<cv::Vec3b> lab;
+  BgrToLabInto(bgr, &lab);
   return lab;
 }
 
@@ -126,8 +130,8 @@ FloorAppearance SampleFloor(const cv::Mat& bgr, int roi_top, int step) {
   const int v0 = std::clamp(static_cast<int>(0.88 * image_rows) - roi_top, 0, rows - 1);
   const int u0 = static_cast<int>(0.35 * cols);
   const int u1 = std::max(u0 + 1, static_cast<int>(0.65 * cols));
-  std::vector<cv::Vec3b> patch;
-  patch.reserve(static_cast<size_t>((rows - v0 + step - 1) / step) * ((u1 - u0 + step - 1) / step));
+  thread_local std::vector<cv::Vec3b> patch;
+  patch.clear();
   for (int v = v0; v < rows; v += step) {
     for (int u = u0; u < u1; u += step) patch.push_back(bgr.at<cv::Vec3b>(v, u));
   }
@@ -136,7 +140,9 @@ FloorAppearance SampleFloor(const cv::Mat& bgr, int roi_top, int step) {
 
 FloorAppearance SampleBelowLine(const cv::Mat& bgr, const MergedLine& line, int roi_top,
                                 int scale) {
-  return AppearanceOf(StripPatches(bgr, line, roi_top, scale, 4.0));
+  thread_local std::vector<cv::Vec3b> strip;
+  StripPatches(bgr, line, roi_top, scale, 4.0, &strip);
+  return AppearanceOf(strip);
 }
 
 double BoundaryScore(const cv::Mat& bgr, const FloorAppearance& floor, const MergedLine& line,
@@ -146,8 +152,8 @@ double BoundaryScore(const cv::Mat& bgr, const FloorAppearance& floor, const Mer
   const int spacing = std::max(1, scale);  // Patch pixel spacing, px.
   const double offset = 4.0 * spacing;     // Strip distance from the line, px.
   // The 3x3 patches on each side of every usable sample: 9 above, then 9 below.
-  std::vector<cv::Vec3b> patches;
-  patches.reserve(samples * 18);
+  thread_local std::vector<cv::Vec3b> patches, lab;
+  patches.clear();
   for (int i = 0; i < samples; ++i) {
     const Eigen::Vector2d p = line.start + (line.end - line.start) * ((i + 0.5) / samples);
     const Eigen::Vector2d pa = p - offset * normal, pb = p + offset * normal;
@@ -165,7 +171,7 @@ double BoundaryScore(const cv::Mat& bgr, const FloorAppearance& floor, const Mer
       }
     }
   }
-  const std::vector<cv::Vec3b> lab = BgrToLab(patches);
+  BgrToLabInto(patches, &lab);
   // Floor-likeness of each strip, per sample, so that a few samples on grout, a box or a door
   // do not decide: the junction has floor just below and something else above. (A baseboard top
   // has baseboard below; a grout line or a reflection has floor on both sides.)
@@ -185,7 +191,9 @@ double BoundaryScore(const cv::Mat& bgr, const FloorAppearance& floor, const Mer
 
 double FloorLikenessAbove(const cv::Mat& bgr, const FloorAppearance& floor,
                           const MergedLine& line, int roi_top, int scale) {
-  const std::vector<cv::Vec3b> lab = BgrToLab(StripPatches(bgr, line, roi_top, scale, -4.0));
+  thread_local std::vector<cv::Vec3b> strip, lab;
+  StripPatches(bgr, line, roi_top, scale, -4.0, &strip);
+  BgrToLabInto(strip, &lab);
   const size_t count = lab.size() / 9;
   double sum = 0;
   for (size_t s = 0; s < count; ++s) {
@@ -204,7 +212,10 @@ double BandContrast(const cv::Mat& bgr, const FloorAppearance& floor, const Merg
   if (u1 <= u0 || std::abs(lower.line.y()) < 1e-6) return -1.0;
   const Eigen::Vector2d down = lower.line.head<2>();  // Unit normal toward the floor.
   const int samples = 24;
-  std::vector<cv::Vec3b> pairs;  // Per usable sample: the band's middle, then the floor below.
+  // Per usable sample: the band's middle, then the floor below (the thread's buffers).
+  thread_local std::vector<cv::Vec3b> pairs, lab;
+  thread_local std::vector<float> distances;
+  pairs.clear();
   for (int i = 0; i < samples; ++i) {
     const double u = u0 + (u1 - u0) * (i + 0.5) / samples;
     // The lower line's point at column u (b > 0: the line is not vertical).
@@ -220,9 +231,8 @@ double BandContrast(const cv::Mat& bgr, const FloorAppearance& floor, const Merg
     pairs.push_back(below);
   }
   if (pairs.size() < 12) return -1.0;
-  const std::vector<cv::Vec3b> lab = BgrToLab(pairs);
-  std::vector<float> distances;
-  distances.reserve(lab.size() / 2);
+  BgrToLabInto(pairs, &lab);
+  distances.clear();
   for (size_t k = 0; k + 1 < lab.size(); k += 2) {
     distances.push_back(LabDistance(cv::Vec3f(lab[k]), cv::Vec3f(lab[k + 1])));
   }

@@ -194,7 +194,8 @@ void ApplyStripeRule(const Eigen::Vector2d& vp, const FloorBandTest& test,
   const FloorAppearance floor = test.floor_below(inner);
   if (test.floor_above(floor, inner) > test.stripe_max_inner) return;
   const Eigen::Vector2d low = LowEnd(inner);
-  std::vector<std::pair<long, int>> above;  // (band pixels, candidate index)
+  thread_local std::vector<std::pair<long, int>> above;  // (band pixels, candidate index)
+  above.clear();
   for (size_t k = 0; k < side.size(); ++k) {
     const MergedLine& outer = side[k].line;
     if (static_cast<int>(k) == *chosen || !LiesAbove(outer, low, vp)) continue;
