@@ -78,9 +78,12 @@ TEST(EvaluateScenes, ASequenceHoldsAWidthThatNarrows) {
   ASSERT_TRUE(found);
   const std::vector<EvalScene> scenes = LoadScenes(dir.Path("data"));
   // Without the inner-line check, which finds frame 10's right wall on its own (its ceiling
-  // junction): the sequence's width hold is what this test is about.
+  // junction): the sequence's width hold is what this test is about. Without the inside-floor
+  // rule, whose line there leaves the ceiling unable to say which wall is wrong, so that a
+  // confident frame keeps its width (pipeline/width_hold_test.cc).
   RecoverDepthOptions options;
   options.ceiling_checks_inner_lines = false;
+  options.perception.inside_floor_likeness = 0;
   std::unique_ptr<DepthRecoverer> recoverer;
   ASSERT_TRUE(DepthRecoverer::Create(options, &recoverer).ok());
   std::vector<FrameRecord> alone, sequence;
