@@ -221,14 +221,20 @@ TEST(StripeRuleTest, TakesTheJunctionsBeyondAFloorStripe) {
   ExpectTheRuleTakesTheJunctions("floor", {{8, 2}, {8, 3}, {9, 3}}, without, 20.0, 3.0);
 }
 
-TEST(StripeRuleTest, BadOptionIsRejected) {
-  for (const double likeness : {-0.1, 1.5}) {
+// An option that must lie in [0, 1]: a value outside is rejected, and the reason names it.
+void ExpectOutsideZeroToOneRejected(double JunctionDetectorOptions::*option, const char* name) {
+  for (const double value : {-0.1, 1.5}) {
     JunctionDetectorOptions options;
-    options.stripe_floor_likeness = likeness;
+    options.*option = value;
     std::string why;
-    EXPECT_FALSE(options.Check(&why));
-    EXPECT_NE(why.find("stripe_floor_likeness"), std::string::npos) << why;
+    EXPECT_FALSE(options.Check(&why)) << name << " = " << value;
+    EXPECT_NE(why.find(name), std::string::npos) << why;
   }
+}
+
+TEST(StripeRuleTest, BadOptionIsRejected) {
+  ExpectOutsideZeroToOneRejected(&JunctionDetectorOptions::stripe_floor_likeness,
+                                 "stripe_floor_likeness");
 }
 
 // A tiled floor up to a grey baseboard (scene 5 of the class with window bands): the last tile
@@ -243,13 +249,8 @@ TEST(InsideFloorRuleTest, TakesTheJunctionAboveATileJointBesideTheWall) {
 }
 
 TEST(InsideFloorRuleTest, BadOptionIsRejected) {
-  for (const double likeness : {-0.1, 1.5}) {
-    JunctionDetectorOptions options;
-    options.inside_floor_likeness = likeness;
-    std::string why;
-    EXPECT_FALSE(options.Check(&why));
-    EXPECT_NE(why.find("inside_floor_likeness"), std::string::npos) << why;
-  }
+  ExpectOutsideZeroToOneRejected(&JunctionDetectorOptions::inside_floor_likeness,
+                                 "inside_floor_likeness");
 }
 
 // A runner with a dark border on a carpeted floor (scenes 6 and 7 of the class with every part):
