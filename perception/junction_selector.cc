@@ -180,33 +180,48 @@ void ApplyFloorRule(const Eigen::Vector2d& vp, const FloorBandTest& test,
   }
 }
 
+// The lines above the chosen one through the same vanishing point, nearest first by the size of
+// their band with it: (band pixels, candidate index), in the thread's buffer.
+const std::vector<std::pair<long, int>>& LinesAboveNearestFirst(
+    const Eigen::Vector2d& vp, const FloorBandTest& test, const std::vector<JunctionCandidate>& side,
+    int chosen) {
+  const MergedLine& inner = side[chosen].line;
+  const Eigen::Vector2d low = LowEnd(inner);
+  thread_local std::vector<std::pair<long, int>> above;
+  above.clear();
+  for (size_t k = 0; k < side.size(); ++k) {
+    const MergedLine& outer = side[k].line;
+    if (static_cast<int>(k) == chosen || !LiesAbove(outer, low, vp)) continue;
+    above.emplace_back(test.measure(inner, outer, vp).pixels, static_cast<int>(k));
+  }
+  std::sort(above.begin(), above.end());
+  return above;
+}
+
+// Candidate `k` replaces the chosen line: it leaves no lower partner, and the replaced line is
+// recorded as the inner one unless an earlier rule recorded one.
+void TakeLineAbove(int k, int* chosen, int* inner_index, int* lower) {
+  if (*inner_index < 0) *inner_index = *chosen;
+  *chosen = k;
+  *lower = -1;
+}
+
 // The stripe rule on one side (see FloorBandTest::floor_above). The lines above the chosen one
 // (through the same vanishing point) are taken nearest first, by the size of their band with it;
 // the first with floor above it is the stripe's far edge, the line after it the junction. The
 // chosen line must itself show little floor above it: a junction as light as the floor, or a
-// grout line, has floor-like colour on both sides and says nothing. A line that replaces the
-// chosen one leaves no lower partner (the baseboard rule's was below the stripe) and records the
-// replaced line as the inner one, unless the floor rule did.
+// grout line, has floor-like colour on both sides and is left to the inside-floor rule. The line
+// taken leaves no lower partner (the baseboard rule's was below the stripe; TakeLineAbove).
 void ApplyStripeRule(const Eigen::Vector2d& vp, const FloorBandTest& test,
                      const std::vector<JunctionCandidate>& side, int* chosen, int* inner_index,
                      int* lower) {
   const MergedLine& inner = side[*chosen].line;
   const FloorAppearance floor = test.floor_below(inner);
   if (test.floor_above(floor, inner) > test.stripe_max_inner) return;
-  const Eigen::Vector2d low = LowEnd(inner);
-  thread_local std::vector<std::pair<long, int>> above;  // (band pixels, candidate index)
-  above.clear();
-  for (size_t k = 0; k < side.size(); ++k) {
-    const MergedLine& outer = side[k].line;
-    if (static_cast<int>(k) == *chosen || !LiesAbove(outer, low, vp)) continue;
-    above.emplace_back(test.measure(inner, outer, vp).pixels, static_cast<int>(k));
-  }
-  std::sort(above.begin(), above.end());
+  const std::vector<std::pair<long, int>>& above = LinesAboveNearestFirst(vp, test, side, *chosen);
   for (size_t i = 0; i + 1 < above.size(); ++i) {
     if (test.floor_above(floor, side[above[i].second].line) >= test.stripe_min_beyond) {
-      if (*inner_index < 0) *inner_index = *chosen;
-      *chosen = above[i + 1].second;
-      *lower = -1;
+      TakeLineAbove(above[i + 1].second, chosen, inner_index, lower);
       return;
     }
   }
@@ -219,22 +234,8 @@ void ApplyInsideFloorRule(const Eigen::Vector2d& vp, const FloorBandTest& test,
                           int* inner_index, int* lower) {
   const MergedLine& inner = side[*chosen].line;
   if (test.floor_above(test.floor_below(inner), inner) < test.inside_min_likeness) return;
-  const Eigen::Vector2d low = LowEnd(inner);
-  long nearest_pixels = 0;
-  int nearest = -1;
-  for (size_t k = 0; k < side.size(); ++k) {
-    const MergedLine& outer = side[k].line;
-    if (static_cast<int>(k) == *chosen || !LiesAbove(outer, low, vp)) continue;
-    const long pixels = test.measure(inner, outer, vp).pixels;
-    if (nearest < 0 || pixels < nearest_pixels) {
-      nearest_pixels = pixels;
-      nearest = static_cast<int>(k);
-    }
-  }
-  if (nearest < 0) return;
-  if (*inner_index < 0) *inner_index = *chosen;
-  *chosen = nearest;
-  *lower = -1;
+  const std::vector<std::pair<long, int>>& above = LinesAboveNearestFirst(vp, test, side, *chosen);
+  if (!above.empty()) TakeLineAbove(above.front().second, chosen, inner_index, lower);
 }
 
 }  // namespace
