@@ -212,30 +212,49 @@ void TakeLineAbove(int k, int* chosen, int* inner_index, int* lower) {
 // chosen line must itself show little floor above it: a junction as light as the floor, or a
 // grout line, has floor-like colour on both sides and is left to the inside-floor rule. The line
 // taken leaves no lower partner (the baseboard rule's was below the stripe; TakeLineAbove).
-void ApplyStripeRule(const Eigen::Vector2d& vp, const FloorBandTest& test,
-                     const std::vector<JunctionCandidate>& side, int* chosen, int* inner_index,
-                     int* lower) {
-  const MergedLine& inner = side[*chosen].line;
-  const FloorAppearance floor = test.floor_below(inner);
-  if (test.floor_above(floor, inner) > test.stripe_max_inner) return;
+// `floor` is the floor just below the chosen line, `above_chosen` the chosen line's likeness
+// above it; true when a line was taken.
+bool ApplyStripeRule(const Eigen::Vector2d& vp, const FloorBandTest& test,
+                     const std::vector<JunctionCandidate>& side, const FloorAppearance& floor,
+                     double above_chosen, int* chosen, int* inner_index, int* lower) {
+  if (above_chosen > test.stripe_max_inner) return false;
   const std::vector<std::pair<long, int>>& above = LinesAboveNearestFirst(vp, test, side, *chosen);
   for (size_t i = 0; i + 1 < above.size(); ++i) {
     if (test.floor_above(floor, side[above[i].second].line) >= test.stripe_min_beyond) {
       TakeLineAbove(above[i + 1].second, chosen, inner_index, lower);
-      return;
+      return true;
     }
   }
+  return false;
 }
 
 // A line with the floor's colour on both sides lies inside the floor (a tile joint beside the
 // wall, a runner's or a shadow's edge): the nearest line above it bounds the floor.
+// `above_chosen`: the chosen line's likeness above it, against the floor just below it.
 void ApplyInsideFloorRule(const Eigen::Vector2d& vp, const FloorBandTest& test,
-                          const std::vector<JunctionCandidate>& side, int* chosen,
-                          int* inner_index, int* lower) {
-  const MergedLine& inner = side[*chosen].line;
-  if (test.floor_above(test.floor_below(inner), inner) < test.inside_min_likeness) return;
+                          const std::vector<JunctionCandidate>& side, double above_chosen,
+                          int* chosen, int* inner_index, int* lower) {
+  if (above_chosen < test.inside_min_likeness) return;
   const std::vector<std::pair<long, int>>& above = LinesAboveNearestFirst(vp, test, side, *chosen);
   if (!above.empty()) TakeLineAbove(above.front().second, chosen, inner_index, lower);
+}
+
+// The floor-colour rules on one side, the stripe rule first: the floor below the chosen line and
+// its likeness above are sampled once, and again only for a line the stripe rule took.
+void ApplyFloorColourRules(const Eigen::Vector2d& vp, const FloorBandTest& test,
+                           const std::vector<JunctionCandidate>& side, int* chosen,
+                           int* inner_index, int* lower) {
+  if (!(test.stripe_min_beyond > 0) && !(test.inside_min_likeness > 0)) return;
+  FloorAppearance floor = test.floor_below(side[*chosen].line);
+  double above_chosen = test.floor_above(floor, side[*chosen].line);
+  if (test.stripe_min_beyond > 0 &&
+      ApplyStripeRule(vp, test, side, floor, above_chosen, chosen, inner_index, lower)) {
+    floor = test.floor_below(side[*chosen].line);
+    above_chosen = test.floor_above(floor, side[*chosen].line);
+  }
+  if (test.inside_min_likeness > 0) {
+    ApplyInsideFloorRule(vp, test, side, above_chosen, chosen, inner_index, lower);
+  }
 }
 
 }  // namespace
@@ -295,18 +314,10 @@ SelectedPair SelectJunctionPair(std::vector<JunctionCandidate>* left_candidates,
     ApplyBaseboardRule(right, best.vanishing_point, false, band, &best.right, &best.right_lower);
   }
   if (best.left >= 0 && floor_band.measure && floor_band.floor_below && floor_band.floor_above) {
-    if (floor_band.stripe_min_beyond > 0) {
-      ApplyStripeRule(best.vanishing_point, floor_band, left, &best.left, &best.left_inner,
-                      &best.left_lower);
-      ApplyStripeRule(best.vanishing_point, floor_band, right, &best.right, &best.right_inner,
-                      &best.right_lower);
-    }
-    if (floor_band.inside_min_likeness > 0) {
-      ApplyInsideFloorRule(best.vanishing_point, floor_band, left, &best.left, &best.left_inner,
-                           &best.left_lower);
-      ApplyInsideFloorRule(best.vanishing_point, floor_band, right, &best.right,
-                           &best.right_inner, &best.right_lower);
-    }
+    ApplyFloorColourRules(best.vanishing_point, floor_band, left, &best.left, &best.left_inner,
+                          &best.left_lower);
+    ApplyFloorColourRules(best.vanishing_point, floor_band, right, &best.right, &best.right_inner,
+                          &best.right_lower);
   }
   return best;
 }
