@@ -186,6 +186,88 @@ double Norm(const double* a, const double* b) {
   return std::sqrt(s);
 }
 
+// The LM step of one iteration: J S y = -f damped by D (S the column scaling, D^2 the diagonal
+// over the radius), solved in the scaled space; `delta` = S y, the unscaled step, and the cost
+// change the linear model predicts for it. False when the step is invalid (the damped system
+// is singular, or the model predicts no decrease).
+template <int N>
+bool DampedStep(const Linearization<N>& current, const double* scale, const double* diagonal,
+                double radius, double* delta, double* model_cost_change) {
+  double scaled_r[N][N + 1];
+  for (int i = 0; i < N; ++i) {
+    for (int j = 0; j < N; ++j) scaled_r[i][j] = current.r[i][j] * scale[j];
+    scaled_r[i][N] = current.r[i][N];
+  }
+  double d[N], step[N];
+  for (int k = 0; k < N; ++k) d[k] = std::sqrt(diagonal[k] / radius);
+  if (!SolveDamped<N>(scaled_r, d, step)) return false;
+  double g_step = 0, r_step_sq = 0;
+  for (int k = 0; k < N; ++k) {
+    step[k] = -step[k];
+    g_step += step[k] * current.gradient[k] * scale[k];
+  }
+  for (int i = 0; i < N; ++i) {
+    double v = 0;
+    for (int j = i; j < N; ++j) v += scaled_r[i][j] * step[j];
+    r_step_sq += v * v;
+  }
+  *model_cost_change = -(g_step + 0.5 * r_step_sq);
+  for (int k = 0; k < N; ++k) delta[k] = step[k] * scale[k];
+  return *model_cost_change > 0.0;
+}
+
+// The projected Armijo line search along `delta` from x (bounded problems): `delta` is scaled by
+// the step that gives sufficient decrease, left as it is when none is found. `trial` is the last
+// point evaluated (with derivatives); each evaluation counts in *jacobian_evaluations.
+template <int N, typename Residuals>
+void ProjectedLineSearch(const Residuals& residuals, const RobustLoss& loss,
+                         const Linearization<N>& current, const double* x, const double* lower,
+                         const double* upper, double* delta, Linearization<N>* trial,
+                         int* jacobian_evaluations) {
+  LineSample initial, previous, sample;
+  initial.value = current.cost;
+  initial.value_ok = initial.gradient_ok = true;
+  double direction_max = 0;
+  for (int k = 0; k < N; ++k) {
+    initial.gradient += current.gradient[k] * delta[k];
+    direction_max = std::max(direction_max, std::abs(delta[k]));
+  }
+  const auto evaluate = [&](double alpha) {
+    double point[N];
+    Project<N>(x, delta, alpha, lower, upper, point);
+    Linearize<N>(residuals, loss, point, trial);
+    ++*jacobian_evaluations;
+    LineSample s;
+    s.x = alpha;
+    s.value = trial->cost;
+    s.value_ok = trial->ok;
+    if (trial->ok) {
+      for (int k = 0; k < N; ++k) s.gradient += delta[k] * trial->gradient[k];
+      s.gradient_ok = std::isfinite(s.gradient);
+    }
+    return s;
+  };
+  const auto sufficient_decrease = [&](const LineSample& s) {
+    return s.value_ok && !(s.value > initial.value + kSufficientDecrease * initial.gradient * s.x);
+  };
+  sample = evaluate(1.0);
+  for (int tries = 0; !sufficient_decrease(sample);) {
+    if (++tries >= kMaxLineIterations) return;
+    const double alpha = InterpolatedStep(initial, previous, sample, kMaxContraction * sample.x,
+                                          kMinContraction * sample.x);
+    if (alpha * direction_max < kMinLineStep) return;
+    previous = sample;
+    sample = evaluate(alpha);
+  }
+  for (int k = 0; k < N; ++k) delta[k] *= sample.x;
+}
+
+// The radius after an accepted step, from its relative decrease (Ceres's LM strategy).
+inline double GrownRadius(double radius, double relative_decrease) {
+  return std::min(kMaxRadius,
+                  radius / std::max(1.0 / 3.0, 1.0 - std::pow(2.0 * relative_decrease - 1.0, 3)));
+}
+
 }  // namespace bounded_lm
 
 // Minimises 1/2 sum rho(r_i(x)^2) over lower <= x <= upper from x (projected onto the box first);
@@ -253,12 +335,6 @@ BoundedLmSummary SolveBoundedLm(const Residuals& residuals, const BoundedLmOptio
     ++iteration;
     step_successful = false;
 
-    // The LM step in the scaled space: J S y = -f damped by D.
-    double scaled_r[N][N + 1];
-    for (int i = 0; i < N; ++i) {
-      for (int j = 0; j < N; ++j) scaled_r[i][j] = current.r[i][j] * scale[j];
-      scaled_r[i][N] = current.r[i][N];
-    }
     if (!reuse_diagonal) {
       for (int k = 0; k < N; ++k) {
         diagonal[k] = std::min(std::max(current.column_sq[k] * scale[k] * scale[k], kMinDiagonal),
@@ -266,25 +342,9 @@ BoundedLmSummary SolveBoundedLm(const Residuals& residuals, const BoundedLmOptio
       }
     }
     reuse_diagonal = true;
-    double d[N], step[N];
-    for (int k = 0; k < N; ++k) d[k] = std::sqrt(diagonal[k] / radius);
-    bool valid = SolveDamped<N>(scaled_r, d, step);
+    double delta[N];
     double model_cost_change = 0;
-    if (valid) {
-      double g_step = 0, r_step_sq = 0;
-      for (int k = 0; k < N; ++k) {
-        step[k] = -step[k];
-        g_step += step[k] * current.gradient[k] * scale[k];
-      }
-      for (int i = 0; i < N; ++i) {
-        double v = 0;
-        for (int j = i; j < N; ++j) v += scaled_r[i][j] * step[j];
-        r_step_sq += v * v;
-      }
-      model_cost_change = -(g_step + 0.5 * r_step_sq);
-      valid = model_cost_change > 0.0;
-    }
-    if (!valid) {
+    if (!DampedStep<N>(current, scale, diagonal, radius, delta, &model_cost_change)) {
       if (++invalid_steps >= kMaxInvalidSteps) {
         summary.message = "Too many consecutive invalid steps.";
         return summary;
@@ -294,59 +354,8 @@ BoundedLmSummary SolveBoundedLm(const Residuals& residuals, const BoundedLmOptio
       continue;
     }
     invalid_steps = 0;
-    double delta[N];
-    for (int k = 0; k < N; ++k) delta[k] = step[k] * scale[k];
-
-    // Projected Armijo line search along delta.
-    {
-      LineSample initial, previous, sample;
-      initial.value = current.cost;
-      initial.value_ok = initial.gradient_ok = true;
-      double direction_max = 0;
-      for (int k = 0; k < N; ++k) {
-        initial.gradient += current.gradient[k] * delta[k];
-        direction_max = std::max(direction_max, std::abs(delta[k]));
-      }
-      auto evaluate = [&](double alpha) {
-        double point[N];
-        Project<N>(x, delta, alpha, lower, upper, point);
-        Linearize<N>(residuals, loss, point, &trial);
-        ++summary.jacobian_evaluations;
-        LineSample s;
-        s.x = alpha;
-        s.value = trial.cost;
-        s.value_ok = trial.ok;
-        if (trial.ok) {
-          for (int k = 0; k < N; ++k) s.gradient += delta[k] * trial.gradient[k];
-          s.gradient_ok = std::isfinite(s.gradient);
-        }
-        return s;
-      };
-      const auto sufficient_decrease = [&](const LineSample& s) {
-        return s.value_ok &&
-               !(s.value > initial.value + kSufficientDecrease * initial.gradient * s.x);
-      };
-      sample = evaluate(1.0);
-      bool success = true;
-      for (int tries = 0; !sufficient_decrease(sample);) {
-        if (++tries >= kMaxLineIterations) {
-          success = false;
-          break;
-        }
-        const double alpha = InterpolatedStep(initial, previous, sample,
-                                              kMaxContraction * sample.x,
-                                              kMinContraction * sample.x);
-        if (alpha * direction_max < kMinLineStep) {
-          success = false;
-          break;
-        }
-        previous = sample;
-        sample = evaluate(alpha);
-      }
-      if (success) {
-        for (int k = 0; k < N; ++k) delta[k] *= sample.x;
-      }
-    }
+    ProjectedLineSearch<N>(residuals, loss, current, x, lower, upper, delta, &trial,
+                           &summary.jacobian_evaluations);
 
     // The candidate point and its cost (the line search's last point when it is the same).
     double candidate[N];
@@ -385,9 +394,7 @@ BoundedLmSummary SolveBoundedLm(const Residuals& residuals, const BoundedLmOptio
       x_norm = Norm<N>(x, zero);
       summary.final_cost = std::min(summary.final_cost, current.cost);
       step_successful = true;
-      radius = std::min(kMaxRadius, radius / std::max(1.0 / 3.0,
-                                                      1.0 - std::pow(2.0 * relative_decrease - 1.0,
-                                                                     3)));
+      radius = GrownRadius(radius, relative_decrease);
       decrease_factor = 2.0;
       reuse_diagonal = false;
     } else {
