@@ -42,7 +42,10 @@ void HoldWidth(const CorridorGeometry& previous, double max_change, bool frame_d
   const double h = g->camera_height, trusted = previous.ceiling_height;
   const double* side = result->ceiling.side_height;
   const char* why = nullptr;
-  if (trusted > h && side[0] > h && side[1] > h) {
+  // Each side's height only from a junction supported enough to compare the two (as the frame's
+  // doubt and the ceiling hold ask): a weak side's height is a guess.
+  const bool comparable = CeilingDisagreement(result->ceiling, h) >= 0;
+  if (comparable && trusted > h && side[0] > h && side[1] > h) {
     const double off_left = std::abs(std::log((side[0] - h) / (trusted - h)));
     const double off_right = std::abs(std::log((side[1] - h) / (trusted - h)));
     // Only a clear answer: one side off by what a wrong wall does, the other by under half that.
