@@ -42,15 +42,15 @@ void HoldWidth(const CorridorGeometry& previous, double max_change, bool frame_d
   const double h = g->camera_height, trusted = previous.ceiling_height;
   const double* side = result->ceiling.side_height;
   const char* why = nullptr;
-  // Each side's height only from a junction supported enough to compare the two (as the frame's
-  // doubt and the ceiling hold ask): a weak side's height is a guess.
-  const bool comparable = CeilingDisagreement(result->ceiling, h) >= 0;
-  if (comparable && trusted > h && side[0] > h && side[1] > h) {
+  if (trusted > h && side[0] > h && side[1] > h) {
     const double off_left = std::abs(std::log((side[0] - h) / (trusted - h)));
     const double off_right = std::abs(std::log((side[1] - h) / (trusted - h)));
-    // Only a clear answer: one side off by what a wrong wall does, the other by under half that.
+    // Only a clear answer: one side off by what a wrong wall does, the other by under half that
+    // and by less than a wrong wall does (off by more, its wall is wrong too: both lines inside
+    // the floor, and keeping either puts the other wall far beyond the truth).
     const double worse = std::max(off_left, off_right), better = std::min(off_left, off_right);
-    if (worse > std::log(1 + max_change) && better < 0.5 * worse) {
+    const double wrong_wall = std::log(1 + max_change);
+    if (worse > wrong_wall && better < 0.5 * worse && better <= wrong_wall) {
       keep_left = off_left <= off_right;
       why = "its ceiling agrees with the trusted one";
     }

@@ -37,10 +37,10 @@ bool MuchNarrower(const CorridorGeometry& previous, double max_change, const Cor
 // (result->width_held). The wall that stays is the one whose ceiling (result->ceiling's side
 // heights, each side searched alone) agrees with the trusted ceiling `previous` carries, when one
 // side's height above the camera is off from it by more than max_change (|log ratio|: a wall put
-// too near scales its side's height by the same factor) and the other by less than half as much,
-// both sides' junctions supported enough to be compared (CeilingDisagreement not negative: a
-// side found on a few edges, its junction hidden behind a tall box, says nothing of its wall).
-// Otherwise (no trusted ceiling, a side too weak, no clear answer), the wall that moved
+// too near scales its side's height by the same factor) and the other by less than half as much
+// and by no more than max_change (a side off by more has a wrong wall too: both walls were put
+// too near, and keeping either would put the other far beyond the truth).
+// Otherwise (no trusted ceiling, a side without a height, no clear answer), the wall that moved
 // less since the recent frames, but only for a frame whose own evidence is doubted
 // (`frame_doubted`: its confidence below min_confidence, or its two ceiling sides measurably
 // disagreeing): which wall moved less is a guess, and a guess does not overrule a frame whose

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "pipeline/ceiling_agreement.h"
 #include "pipeline/frame_pipeline.h"
 #include "corridor_depth/recover_depth.h"
 #include "synth/corridor_renderer.h"
@@ -125,6 +126,25 @@ TEST(WidthHoldTest, TheCeilingsChecksComeBeforeTheHold) {
   EXPECT_FALSE(result.width_held) << result.fallback;
   EXPECT_NE(result.fallback.find("right wall moved out"), std::string::npos) << result.fallback;
   EXPECT_NEAR(result.geometry.width, truth.width, 0.05 * truth.width);
+}
+
+// The recent width may veto the inner-line check's move (it agrees better with the line the move
+// would replace), but not a move after which the frame's two ceiling sides, each searched alone,
+// agree: then the recent width is the wrong one. Here the recent width is this frame's own too
+// narrow one (as frames whose right line was the same wrong one would give).
+TEST(WidthHoldTest, AMoveItsOwnCeilingConfirmsIsNotVetoedByTheRecentWidth) {
+  const HiddenJunction h = MakeHiddenJunction();
+  const CorridorGeometry& truth = h.frame.truth;
+  const RecoverDepthResult narrow = RecoverWith(h, HoldOptions(), nullptr);
+  ASSERT_LT(narrow.geometry.width, 0.85 * truth.width);  // The premise: the right line is wrong.
+  CorridorGeometry recent = h.previous;
+  recent.width = narrow.geometry.width;
+  const RecoverDepthResult result = RecoverWith(h, RecoverDepthOptions(), &recent);
+  EXPECT_NE(result.fallback.find("right wall moved out"), std::string::npos) << result.fallback;
+  EXPECT_NEAR(result.geometry.width, truth.width, 0.05 * truth.width);
+  const double disagreement = CeilingDisagreement(result.ceiling, result.geometry.camera_height);
+  EXPECT_GE(disagreement, 0);
+  EXPECT_LE(disagreement, std::log(kCeilingSidesAgree));
 }
 
 // In a stream, the width is held at most three frames in a row: then the narrow width is let go
