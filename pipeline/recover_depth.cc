@@ -53,14 +53,7 @@ Status DepthRecoverer::Recover(const cv::Mat& image, const Camera& camera,
   const auto start = Clock::now();
   Detect(image, camera, result, track);
   if (result->ReadyToReconstruct()) Reconstruct(camera, result, previous);
-  // A whole search that agrees with the pair tracked into it may have found the same wrong lines
-  // twice (a box's foot kept from frame to frame): the track is trusted only when the frame's two
-  // ceiling sides, each searched alone, agree with its walls (when the ceiling is searched).
-  const bool ceiling_searched = options_.ceiling_height <= 0 && options_.estimate_ceiling;
-  if (track != nullptr && !result->junctions_tracked && ceiling_searched &&
-      !(result->status.ok() && result->ceiling_trusted)) {
-    track->Unconfirmed();
-  }
+  if (track != nullptr && !TrackConfirmedBy(options_, *result)) track->Unconfirmed();
   result->times.total = SecondsSince(start);
   return result->status;
 }

@@ -14,6 +14,12 @@ bool FrameInDoubt(double own_confidence, double min_confidence, double ceiling_d
          junctions_tracked;
 }
 
+bool TrackConfirmedBy(const RecoverDepthOptions& options, const RecoverDepthResult& result) {
+  const bool ceiling_searched = options.ceiling_height <= 0 && options.estimate_ceiling;
+  return result.junctions_tracked || !ceiling_searched ||
+         (result.status.ok() && result.ceiling_trusted);
+}
+
 bool NoteRescue(double own_confidence, double min_confidence, RecoverDepthResult* result) {
   if (!result->width_held || !(own_confidence >= 0) || !(own_confidence < min_confidence) ||
       !(result->confidence >= min_confidence)) {
