@@ -115,16 +115,13 @@ Status MoveInnerWall(const WallCheckInputs& in, const CorridorGeometry* previous
   if (!status.ok()) return status;
   // In a sequence the previous frame's width must agree better with the moved wall than with the
   // line it replaces (a misjudged side would otherwise carry on through the width hold), unless
-  // the wall moved out and the moved walls' two ceiling sides, each searched alone, agree with
-  // each other and with the trusted ceiling (within max_ceiling_change): the frame's own evidence
-  // confirms both walls, and the recent width (from frames whose sides disagreed) is the wrong
-  // one. Sides agreeing on another height are both walls wrong alike (ScaleWallsToCeiling), no
-  // confirmation. Only out, as the width hold and the wall scaling go: a narrower width is the
-  // suspicious one, and two sides agreeing on walls moved in are what both walls too near give.
+  // the moved walls' two ceiling sides, each searched alone, agree with each other and with the
+  // trusted ceiling (within max_ceiling_change): the frame's own evidence confirms both walls, and
+  // the recent width (from frames whose sides disagreed) is the wrong one. Sides agreeing on
+  // another height are both walls wrong alike (ScaleWallsToCeiling), no confirmation.
   const double h = moved.camera_height;
   const double moved_disagreement = CeilingDisagreement(ceiling, h);
-  bool confirmed = moved.width > geometry->width && moved_disagreement >= 0 &&
-                   moved_disagreement <= std::log(kCeilingSidesAgree);
+  bool confirmed = moved_disagreement >= 0 && moved_disagreement <= std::log(kCeilingSidesAgree);
   if (confirmed && previous != nullptr && previous->HasCeiling()) {
     confirmed = ceiling.height > h &&
                 std::abs(std::log((ceiling.height - h) / (previous->ceiling_height - h))) <=
