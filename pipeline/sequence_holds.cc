@@ -67,13 +67,17 @@ void HoldWidth(const CorridorGeometry& previous, double max_change, bool frame_d
       << previous.width << " m";
   const double moved_line =
       (keep_left ? result->junctions.right : result->junctions.left).confidence;
-  if (!frame_doubted && (why == nullptr || moved_line >= kStrongJunction)) {
+  if (!frame_doubted) {
     if (why == nullptr) {
       how << ": kept (the frame's own evidence is strong and its ceiling does not say which wall "
              "is wrong)";
-    } else {
+    } else if (moved_line >= kStrongJunction) {
       how << ": kept (the frame's own evidence is strong and its " << (keep_left ? "right" : "left")
           << " junction line, " << moved_line << ", too)";
+    } else {
+      how << ": kept (the frame's own evidence is strong; its ceiling puts the "
+          << (keep_left ? "right" : "left")
+          << " wall farther, as a box's face standing before the wall would)";
     }
     result->width_kept = true;
     result->AddNote(how.str());

@@ -49,12 +49,12 @@ bool MuchNarrower(const CorridorGeometry& previous, double max_change, const Cor
 // and by no more than max_change (a side off by more has a wrong wall too: both walls were put
 // too near, and keeping either would put the other far beyond the truth).
 // Otherwise (no trusted ceiling, a side without a height, no clear answer), the wall that moved
-// less since the recent frames, but only for a frame whose own evidence is doubted
-// (`frame_doubted`: its confidence below min_confidence, or its two ceiling sides measurably
-// disagreeing): which wall moved less is a guess, and a guess does not overrule a frame whose
-// evidence is strong. Nor does a frame that is not doubted lose a strong line (kStrongJunction) to
-// the hold, whatever its ceiling says. Such a frame keeps its width, with a note
-// (result->width_kept: the sequence does not learn that width, SequencePrior).
+// less since the recent frames. Only a frame whose own evidence is doubted (`frame_doubted`: its
+// confidence below min_confidence, its two ceiling sides measurably disagreeing, or tracked
+// junctions) is held: which wall moved less is a guess, and even the ceiling's answer does not
+// tell a line inside the floor from the foot of a box's face standing before the wall, whose near
+// depth the frame's own layout draws right. A frame that is not doubted keeps its width, with a
+// note (result->width_kept: the sequence does not learn that width, SequencePrior).
 void HoldWidth(const CorridorGeometry& previous, double max_change, bool frame_doubted,
                CorridorGeometry* g, RecoverDepthResult* result);
 
