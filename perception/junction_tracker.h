@@ -60,10 +60,6 @@ class JunctionTrack {
   // found. A frame without both junctions ends the track.
   void Searched(const JunctionPair& junctions, const cv::Size& size, bool agrees);
 
-  // True when the last frame was searched whole and agreed with its tracked pair: whether the next
-  // frame may be tracked then waits on that frame's confirmation (Unconfirmed).
-  bool JustAgreed() const { return has_previous_ && agreed_ && tracked_in_a_row_ == 0; }
-
   // The last searched frame's walls were not confirmed (its two ceiling sides did not agree, or it
   // was refused): its pair may be the same wrong lines found twice, and is not tracked on.
   void Unconfirmed() { agreed_ = false; }

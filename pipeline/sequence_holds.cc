@@ -16,8 +16,7 @@ bool FrameInDoubt(double own_confidence, double min_confidence, double ceiling_d
 
 bool TrackConfirmedBy(const RecoverDepthOptions& options, const RecoverDepthResult& result) {
   const bool ceiling_searched = options.ceiling_height <= 0 && options.estimate_ceiling;
-  return result.junctions_tracked || !ceiling_searched ||
-         (result.status.ok() && result.ceiling_trusted);
+  return !ceiling_searched || (result.status.ok() && result.ceiling_trusted);
 }
 
 bool NoteRescue(double own_confidence, double min_confidence, RecoverDepthResult* result) {

@@ -23,12 +23,14 @@ inline constexpr double kStrongJunction = 0.75;
 bool FrameInDoubt(double own_confidence, double min_confidence, double ceiling_disagreement,
                   double max_disagreement, bool junctions_tracked);
 
-// Whether a frame may confirm the junction track (JunctionTrack::Unconfirmed when not): a whole
-// search that agrees with the pair tracked into it may have found the same wrong lines twice (a
-// box's foot kept from frame to frame), so the track is trusted on only when the frame, searched
-// whole, ends ok with its two ceiling sides, each searched alone, agreeing with its walls
-// (ceiling_trusted). Without a ceiling search (a given ceiling height, or none estimated), or for a
-// tracked frame, there is nothing to confirm: true.
+// Whether a frame confirms the junction track: a whole search that agrees with the pair tracked
+// into it may have found the same wrong lines twice (a box's foot kept from frame to frame), and
+// a tracked line may drift onto another one, so the track is trusted on only while each frame
+// ends ok with its two ceiling sides, each searched alone, agreeing with its walls
+// (ceiling_trusted). A searched frame that does not confirm leaves the next frame to a whole
+// search (JunctionTrack::Unconfirmed); a tracked one is itself searched whole again, and the track
+// goes on from that search (DepthRecoverer::Recover, FramePipeline). Without a ceiling search (a
+// given ceiling height, or none estimated) there is nothing to confirm: true.
 bool TrackConfirmedBy(const RecoverDepthOptions& options, const RecoverDepthResult& result);
 
 // When a frame whose own confidence was below min_confidence ends with its width held and a

@@ -90,15 +90,38 @@ TEST_F(JunctionTrackingTest, NoFrameIsTrackedWithoutAConfirmingCeiling) {
   EXPECT_GE(RunDrive(true, &errors, no_ceiling), kFrames - 4);
 }
 
-TEST(TrackConfirmationTest, OnlyASearchedFrameWithATrustedCeilingConfirms) {
+// A tracked frame whose ceiling does not confirm its walls is searched whole again, and the next
+// frame is searched whole too. Frames 0-2 with the defaults (frame 2 tracked), frame 3 with the
+// ceiling search under the drive's ceiling (its ceiling cannot be trusted), frame 4 with the
+// defaults again, all on one track.
+TEST_F(JunctionTrackingTest, ATrackedFrameItsCeilingDoesNotConfirmIsSearchedWhole) {
+  RecoverDepthOptions below;
+  below.ceiling.max_height = 2.2;
+  std::unique_ptr<DepthRecoverer> normal, blind;
+  ASSERT_TRUE(DepthRecoverer::Create(RecoverDepthOptions(), &normal).ok());
+  ASSERT_TRUE(DepthRecoverer::Create(below, &blind).ok());
+  JunctionTrack track;
+  RecoverDepthResult result;
+  for (int i = 0; i < 3; ++i) {
+    ASSERT_TRUE(normal->Recover(frames_[i].bgr, camera_, &result, nullptr, &track).ok());
+  }
+  ASSERT_TRUE(result.junctions_tracked) << "premise: the track is trusted by frame 2";
+  ASSERT_TRUE(blind->Recover(frames_[3].bgr, camera_, &result, nullptr, &track).ok());
+  EXPECT_FALSE(result.junctions_tracked);
+  EXPECT_LT(std::abs(result.geometry.width / frames_[3].truth.width - 1), 0.02);
+  ASSERT_TRUE(normal->Recover(frames_[4].bgr, camera_, &result, nullptr, &track).ok());
+  EXPECT_FALSE(result.junctions_tracked);
+}
+
+TEST(TrackConfirmationTest, OnlyAFrameWithATrustedCeilingConfirms) {
   RecoverDepthOptions options;
   RecoverDepthResult result;  // Status ok, searched whole.
   result.ceiling_trusted = true;
   EXPECT_TRUE(TrackConfirmedBy(options, result));
   result.ceiling_trusted = false;
   EXPECT_FALSE(TrackConfirmedBy(options, result));
-  result.junctions_tracked = true;  // A tracked frame has nothing to confirm.
-  EXPECT_TRUE(TrackConfirmedBy(options, result));
+  result.junctions_tracked = true;  // A tracked frame too needs its ceiling.
+  EXPECT_FALSE(TrackConfirmedBy(options, result));
   result.junctions_tracked = false;
   result.ceiling_trusted = true;
   result.status = Status::LowConfidence("refused");
