@@ -35,7 +35,8 @@ bool SameJunctions(const JunctionPair& a, const JunctionPair& b, double toleranc
 // What a sequence's junction search carries from frame to frame: the last frame's junctions, and
 // whether a tracked pair may stand for a frame. A pair tracked from a wrong pair is as wrong, so
 // tracking is trusted only once a whole search found the lines it tracked to (the search of a
-// frame agreed with the pair tracked into it), and for redetect_interval frames after that; then
+// frame agreed with the pair tracked into it) and that frame's walls were not left unconfirmed
+// (Unconfirmed), and for redetect_interval frames after that; then
 // the next frame is searched whole again, and checked against its tracked pair. The interval is
 // the recoverer's option (JunctionTrackerOptions::redetect_interval), passed where it is asked.
 class JunctionTrack {
@@ -58,6 +59,10 @@ class JunctionTrack {
   // Records a frame of `size` searched whole; `agrees`: the pair tracked into it was the one
   // found. A frame without both junctions ends the track.
   void Searched(const JunctionPair& junctions, const cv::Size& size, bool agrees);
+
+  // The last searched frame's walls were not confirmed (its two ceiling sides did not agree, or it
+  // was refused): its pair may be the same wrong lines found twice, and is not tracked on.
+  void Unconfirmed() { agreed_ = false; }
 
  private:
   void Keep(const JunctionPair& junctions, const cv::Size& size);

@@ -53,6 +53,17 @@ Status DepthRecoverer::Recover(const cv::Mat& image, const Camera& camera,
   const auto start = Clock::now();
   Detect(image, camera, result, track);
   if (result->ReadyToReconstruct()) Reconstruct(camera, result, previous);
+  if (track != nullptr && !TrackConfirmedBy(options_, *result)) {
+    if (result->junctions_tracked) {
+      // Tracked lines the frame's ceiling does not confirm: the frame is searched whole, and the
+      // track goes on from that search, unconfirmed.
+      Detect(image, camera, result, nullptr);
+      if (result->ReadyToReconstruct()) Reconstruct(camera, result, previous);
+      track->Searched(result->junctions, image.size(), false);
+    } else {
+      track->Unconfirmed();
+    }
+  }
   result->times.total = SecondsSince(start);
   return result->status;
 }

@@ -14,6 +14,11 @@ bool FrameInDoubt(double own_confidence, double min_confidence, double ceiling_d
          junctions_tracked;
 }
 
+bool TrackConfirmedBy(const RecoverDepthOptions& options, const RecoverDepthResult& result) {
+  const bool ceiling_searched = options.ceiling_height <= 0 && options.estimate_ceiling;
+  return !ceiling_searched || (result.status.ok() && result.ceiling_trusted);
+}
+
 bool NoteRescue(double own_confidence, double min_confidence, RecoverDepthResult* result) {
   if (!result->width_held || !(own_confidence >= 0) || !(own_confidence < min_confidence) ||
       !(result->confidence >= min_confidence)) {
@@ -45,9 +50,12 @@ void HoldWidth(const CorridorGeometry& previous, double max_change, bool frame_d
   if (trusted > h && side[0] > h && side[1] > h) {
     const double off_left = std::abs(std::log((side[0] - h) / (trusted - h)));
     const double off_right = std::abs(std::log((side[1] - h) / (trusted - h)));
-    // Only a clear answer: one side off by what a wrong wall does, the other by under half that.
+    // Only a clear answer: one side off by what a wrong wall does, the other by under half that
+    // and by less than a wrong wall does (off by more, its wall is wrong too: both lines inside
+    // the floor, and keeping either puts the other wall far beyond the truth).
     const double worse = std::max(off_left, off_right), better = std::min(off_left, off_right);
-    if (worse > std::log(1 + max_change) && better < 0.5 * worse) {
+    const double wrong_wall = std::log(1 + max_change);
+    if (worse > wrong_wall && better < 0.5 * worse && better <= wrong_wall) {
       keep_left = off_left <= off_right;
       why = "its ceiling agrees with the trusted one";
     }
@@ -58,13 +66,17 @@ void HoldWidth(const CorridorGeometry& previous, double max_change, bool frame_d
       << previous.width << " m";
   const double moved_line =
       (keep_left ? result->junctions.right : result->junctions.left).confidence;
-  if (!frame_doubted && (why == nullptr || moved_line >= kStrongJunction)) {
+  if (!frame_doubted) {
     if (why == nullptr) {
       how << ": kept (the frame's own evidence is strong and its ceiling does not say which wall "
              "is wrong)";
-    } else {
+    } else if (moved_line >= kStrongJunction) {
       how << ": kept (the frame's own evidence is strong and its " << (keep_left ? "right" : "left")
           << " junction line, " << moved_line << ", too)";
+    } else {
+      how << ": kept (the frame's own evidence is strong; its ceiling puts the "
+          << (keep_left ? "right" : "left")
+          << " wall farther, as a box's face standing before the wall would)";
     }
     result->width_kept = true;
     result->AddNote(how.str());

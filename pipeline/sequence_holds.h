@@ -23,6 +23,16 @@ inline constexpr double kStrongJunction = 0.75;
 bool FrameInDoubt(double own_confidence, double min_confidence, double ceiling_disagreement,
                   double max_disagreement, bool junctions_tracked);
 
+// Whether a frame confirms the junction track: a whole search that agrees with the pair tracked
+// into it may have found the same wrong lines twice (a box's foot kept from frame to frame), and
+// a tracked line may drift onto another one, so the track is trusted on only while each frame
+// ends ok with its two ceiling sides, each searched alone, agreeing with its walls
+// (ceiling_trusted). A searched frame that does not confirm leaves the next frame to a whole
+// search (JunctionTrack::Unconfirmed); a tracked one is itself searched whole again, and the track
+// goes on from that search (DepthRecoverer::Recover, FramePipeline). Without a ceiling search (a
+// given ceiling height, or none estimated) there is nothing to confirm: true.
+bool TrackConfirmedBy(const RecoverDepthOptions& options, const RecoverDepthResult& result);
+
 // When a frame whose own confidence was below min_confidence ends with its width held and a
 // confidence at or above it, notes that the hold rescued it. True when it did.
 bool NoteRescue(double own_confidence, double min_confidence, RecoverDepthResult* result);
@@ -37,14 +47,16 @@ bool MuchNarrower(const CorridorGeometry& previous, double max_change, const Cor
 // (result->width_held). The wall that stays is the one whose ceiling (result->ceiling's side
 // heights, each side searched alone) agrees with the trusted ceiling `previous` carries, when one
 // side's height above the camera is off from it by more than max_change (|log ratio|: a wall put
-// too near scales its side's height by the same factor) and the other by less than half as much.
+// too near scales its side's height by the same factor) and the other by less than half as much
+// and by no more than max_change (a side off by more has a wrong wall too: both walls were put
+// too near, and keeping either would put the other far beyond the truth).
 // Otherwise (no trusted ceiling, a side without a height, no clear answer), the wall that moved
-// less since the recent frames, but only for a frame whose own evidence is doubted
-// (`frame_doubted`: its confidence below min_confidence, or its two ceiling sides measurably
-// disagreeing): which wall moved less is a guess, and a guess does not overrule a frame whose
-// evidence is strong. Nor does a frame that is not doubted lose a strong line (kStrongJunction) to
-// the hold, whatever its ceiling says. Such a frame keeps its width, with a note
-// (result->width_kept: the sequence does not learn that width, SequencePrior).
+// less since the recent frames. Only a frame whose own evidence is doubted (`frame_doubted`: its
+// confidence below min_confidence, its two ceiling sides measurably disagreeing, or tracked
+// junctions) is held: which wall moved less is a guess, and even the ceiling's answer does not
+// tell a line inside the floor from the foot of a box's face standing before the wall, whose near
+// depth the frame's own layout draws right. A frame that is not doubted keeps its width, with a
+// note (result->width_kept: the sequence does not learn that width, SequencePrior).
 void HoldWidth(const CorridorGeometry& previous, double max_change, bool frame_doubted,
                CorridorGeometry* g, RecoverDepthResult* result);
 

@@ -110,16 +110,28 @@ Status MoveInnerWall(const WallCheckInputs& in, const CorridorGeometry* previous
       CheckInnerLine(in.search.bgr, in.search.camera, options.ceiling, options.inner_line, &moved,
                      in.edges, {result->junctions.has_left_lower, result->junctions.has_right_lower});
   if (!check.moved || !CheckPlausible(moved, options).ok()) return Status::Ok();
+  CeilingEstimate ceiling;
+  const Status status = SearchCeiling(in, &moved, &ceiling);
+  if (!status.ok()) return status;
   // In a sequence the previous frame's width must agree better with the moved wall than with the
-  // line it replaces (a misjudged side would otherwise carry on through the width hold).
-  if (previous != nullptr && previous->width > 0 &&
+  // line it replaces (a misjudged side would otherwise carry on through the width hold), unless
+  // the moved walls' two ceiling sides, each searched alone, agree with each other and with the
+  // trusted ceiling (within max_ceiling_change): the frame's own evidence confirms both walls, and
+  // the recent width (from frames whose sides disagreed) is the wrong one. Sides agreeing on
+  // another height are both walls wrong alike (ScaleWallsToCeiling), no confirmation.
+  const double h = moved.camera_height;
+  const double moved_disagreement = CeilingDisagreement(ceiling, h);
+  bool confirmed = moved_disagreement >= 0 && moved_disagreement <= std::log(kCeilingSidesAgree);
+  if (confirmed && previous != nullptr && previous->HasCeiling()) {
+    confirmed = ceiling.height > h &&
+                std::abs(std::log((ceiling.height - h) / (previous->ceiling_height - h))) <=
+                    std::log(1 + options.max_ceiling_change);
+  }
+  if (previous != nullptr && previous->width > 0 && !confirmed &&
       std::abs(std::log(moved.width / previous->width)) >=
           std::abs(std::log(geometry->width / previous->width))) {
     return Status::Ok();
   }
-  CeilingEstimate ceiling;
-  const Status status = SearchCeiling(in, &moved, &ceiling);
-  if (!status.ok()) return status;
   result->ceiling = ceiling;
   *geometry = moved;
   result->moved_side = check.side;

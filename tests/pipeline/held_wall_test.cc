@@ -1,6 +1,7 @@
 // Which wall a held width keeps: the one whose ceiling, searched on its side alone, agrees with
-// the trusted ceiling carried by the sequence; without both sides' heights, the one that moved
-// less since the recent frames, and that only over a doubted frame. Geometry worked out by hand: camera 0.5 m high, ceiling 2.5 m,
+// the trusted ceiling carried by the sequence (and by less than a wrong wall puts it off); without
+// both sides' heights, or with both sides off, the one that moved less since the recent frames;
+// and only a doubted frame is held. Geometry worked out by hand: camera 0.5 m high, ceiling 2.5 m,
 // walls 1.0 m either side; this frame puts its left wall at 0.6 m (a line inside the floor), so
 // that side's ceiling comes out at 0.5 + 2.0 * 0.6 / 1.0 = 1.7 m, 0.51 (|log ratio|) off.
 #include <utility>
@@ -61,26 +62,51 @@ TEST(HeldWallTest, SidesThatBothNearlyAgreeLeaveItToTheWallThatMovedLess) {
   EXPECT_NEAR(held.geometry.LeftDistance(), 0.6, 1e-12);
 }
 
-TEST(HeldWallTest, AConfidentFrameIsHeldOnlyWhenItsCeilingSaysWhichWall) {
-  // The frame's own evidence strong (not doubted): its ceiling's clear answer still holds it...
-  const Held answered = HoldWithSideHeights(1.7, 2.5, false);
-  ASSERT_TRUE(answered.result.width_held);
-  EXPECT_NEAR(answered.geometry.LeftDistance(), 1.0, 1e-12);
-  // ...but without one (one side not measured, or both sides nearly agreeing), which wall moved
-  // less is a guess: the frame keeps its own 1.6 m, and the note says why.
-  for (const auto& sides : {std::make_pair(0.0, 2.5), std::make_pair(2.4, 2.6)}) {
-    const Held kept = HoldWithSideHeights(sides.first, sides.second, false);
-    EXPECT_FALSE(kept.result.width_held);
-    EXPECT_DOUBLE_EQ(kept.geometry.width, 1.6);
-    EXPECT_DOUBLE_EQ(kept.geometry.LeftDistance(), 0.6);
+TEST(HeldWallTest, AConfidentFrameIsNeverHeld) {
+  // The frame's own evidence strong (not doubted): with its ceiling's clear answer (the left side
+  // 0.51 off: a line inside the floor, or a box's face before the wall), without one (one side not
+  // measured), or with both sides nearly agreeing, it keeps its own 1.6 m, and the note says why.
+  const std::pair<double, double> cases[] = {{1.7, 2.5}, {0.0, 2.5}, {2.4, 2.6}};
+  const char* why[] = {"as a box's face standing before the wall would",
+                       "ceiling does not say which wall", "ceiling does not say which wall"};
+  for (int i = 0; i < 3; ++i) {
+    const Held kept = HoldWithSideHeights(cases[i].first, cases[i].second, false);
+    EXPECT_FALSE(kept.result.width_held) << i;
+    EXPECT_TRUE(kept.result.width_kept) << i;
+    EXPECT_DOUBLE_EQ(kept.geometry.width, 1.6) << i;
+    EXPECT_DOUBLE_EQ(kept.geometry.LeftDistance(), 0.6) << i;
     EXPECT_NE(kept.result.fallback.find("own evidence is strong"), std::string::npos)
         << kept.result.fallback;
+    EXPECT_NE(kept.result.fallback.find(why[i]), std::string::npos) << kept.result.fallback;
   }
 }
 
-TEST(HeldWallTest, AConfidentFrameKeepsAStrongLine) {
-  // The ceiling says the left wall is wrong, but its line is strong (0.8, the foot of a box's
-  // face): a confident frame keeps it; a doubted one is held.
+TEST(HeldWallTest, ASideOffByAWrongWallsAmountDoesNotSayWhichWall) {
+  // Left 1.7 m: 1.2 m above the camera against the trusted 2.0 m, |log 0.6| = 0.51 off. Right
+  // 2.2 m: 1.7 m, |log 0.85| = 0.16 off, under half the left's but beyond log 1.15 = 0.14: that
+  // wall is wrong too (both lines inside the floor). No answer: a doubted frame is held by the wall
+  // that moved less (the left one, 0.05 m against 0.35 m), a confident frame keeps its 1.6 m.
+  const Held doubted = HoldWithSideHeights(1.7, 2.2);
+  ASSERT_TRUE(doubted.result.width_held);
+  EXPECT_NEAR(doubted.geometry.LeftDistance(), 0.6, 1e-12);
+  EXPECT_NEAR(doubted.geometry.RightDistance(), 1.4, 1e-12);
+  EXPECT_NE(doubted.result.fallback.find("moved less"), std::string::npos)
+      << doubted.result.fallback;
+  const Held confident = HoldWithSideHeights(1.7, 2.2, false);
+  EXPECT_FALSE(confident.result.width_held);
+  EXPECT_DOUBLE_EQ(confident.geometry.width, 1.6);
+  EXPECT_NE(confident.result.fallback.find("ceiling does not say which wall"), std::string::npos)
+      << confident.result.fallback;
+  // Right 2.4 m: 1.9 m, |log 0.95| = 0.05 off: that side agrees, its wall is kept (doubted frame).
+  const Held answered = HoldWithSideHeights(1.7, 2.4);
+  ASSERT_TRUE(answered.result.width_held);
+  EXPECT_NEAR(answered.geometry.RightDistance(), 1.0, 1e-12);
+  EXPECT_NEAR(answered.geometry.LeftDistance(), 1.0, 1e-12);
+}
+
+TEST(HeldWallTest, ADoubtedFrameLosesEvenAStrongLine) {
+  // The ceiling says the left wall is wrong and its line is strong (0.8, the foot of a box's
+  // face): a confident frame keeps it, with the line named; a doubted one is held.
   const Held kept = HoldWithSideHeights(1.7, 2.5, false, 0.8);
   EXPECT_FALSE(kept.result.width_held);
   EXPECT_DOUBLE_EQ(kept.geometry.LeftDistance(), 0.6);

@@ -1,7 +1,8 @@
 // Junction tracking in a sequence (RecoverDepthOptions::track_junctions): on a rendered drive the
 // frames whose junctions were tracked from the previous frame's are as close to the generator's
 // true width as the whole search's; a frame far from the previous one is searched whole; the
-// two-thread FramePipeline tracks too; a bad tracker option is named.
+// two-thread FramePipeline tracks too; a bad tracker option is named; a frame whose ceiling does
+// not confirm its walls does not let the next one be tracked.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,6 +12,7 @@
 #include "perception/junction_tracker.h"
 #include "pipeline/frame_pipeline.h"
 #include "corridor_depth/recover_depth.h"
+#include "pipeline/sequence_holds.h"
 #include "pipeline/sequence_prior.h"
 #include "tests/support/corridor_frame.h"
 
@@ -31,8 +33,8 @@ class JunctionTrackingTest : public ::testing::Test {
   }
 
   // Runs the drive as a sequence; returns the frames whose junctions were tracked.
-  int RunDrive(bool track_junctions, std::vector<double>* width_errors) const {
-    RecoverDepthOptions options;
+  int RunDrive(bool track_junctions, std::vector<double>* width_errors,
+               RecoverDepthOptions options = RecoverDepthOptions()) const {
     options.track_junctions = track_junctions;
     std::unique_ptr<DepthRecoverer> recoverer;
     EXPECT_TRUE(DepthRecoverer::Create(options, &recoverer).ok());
@@ -70,6 +72,65 @@ TEST_F(JunctionTrackingTest, TrackedFramesAreAsCloseToTheTrueWidth) {
     EXPECT_LT(searched_errors[i], 0.02) << "frame " << i;
     EXPECT_LT(tracked_errors[i], 0.02) << "frame " << i;
   }
+}
+
+// The track is trusted only after a searched frame whose two ceiling sides agree with its walls.
+// With the ceiling search limited to 1.8-2.2 m, under the drive's 2.7 m ceiling, no frame's
+// ceiling is trusted: no frame is tracked, and each is as close to the truth as searched whole.
+// Without a ceiling search there is nothing to confirm: the frames are tracked as before.
+TEST_F(JunctionTrackingTest, NoFrameIsTrackedWithoutAConfirmingCeiling) {
+  std::vector<double> errors;
+  RecoverDepthOptions below;
+  below.ceiling.max_height = 2.2;
+  EXPECT_EQ(RunDrive(true, &errors, below), 0);
+  for (int i = 0; i < kFrames; ++i) EXPECT_LT(errors[i], 0.02) << "frame " << i;
+  RecoverDepthOptions no_ceiling;
+  no_ceiling.estimate_ceiling = false;
+  errors.clear();
+  EXPECT_GE(RunDrive(true, &errors, no_ceiling), kFrames - 4);
+}
+
+// A tracked frame whose ceiling does not confirm its walls is searched whole again, and the next
+// frame is searched whole too. Frames 0-2 with the defaults (frame 2 tracked), frame 3 with the
+// ceiling search under the drive's ceiling (its ceiling cannot be trusted), frame 4 with the
+// defaults again, all on one track.
+TEST_F(JunctionTrackingTest, ATrackedFrameItsCeilingDoesNotConfirmIsSearchedWhole) {
+  RecoverDepthOptions below;
+  below.ceiling.max_height = 2.2;
+  std::unique_ptr<DepthRecoverer> normal, blind;
+  ASSERT_TRUE(DepthRecoverer::Create(RecoverDepthOptions(), &normal).ok());
+  ASSERT_TRUE(DepthRecoverer::Create(below, &blind).ok());
+  JunctionTrack track;
+  RecoverDepthResult result;
+  for (int i = 0; i < 3; ++i) {
+    ASSERT_TRUE(normal->Recover(frames_[i].bgr, camera_, &result, nullptr, &track).ok());
+  }
+  ASSERT_TRUE(result.junctions_tracked) << "premise: the track is trusted by frame 2";
+  ASSERT_TRUE(blind->Recover(frames_[3].bgr, camera_, &result, nullptr, &track).ok());
+  EXPECT_FALSE(result.junctions_tracked);
+  EXPECT_LT(std::abs(result.geometry.width / frames_[3].truth.width - 1), 0.02);
+  ASSERT_TRUE(normal->Recover(frames_[4].bgr, camera_, &result, nullptr, &track).ok());
+  EXPECT_FALSE(result.junctions_tracked);
+}
+
+TEST(TrackConfirmationTest, OnlyAFrameWithATrustedCeilingConfirms) {
+  RecoverDepthOptions options;
+  RecoverDepthResult result;  // Status ok, searched whole.
+  result.ceiling_trusted = true;
+  EXPECT_TRUE(TrackConfirmedBy(options, result));
+  result.ceiling_trusted = false;
+  EXPECT_FALSE(TrackConfirmedBy(options, result));
+  result.junctions_tracked = true;  // A tracked frame too needs its ceiling.
+  EXPECT_FALSE(TrackConfirmedBy(options, result));
+  result.junctions_tracked = false;
+  result.ceiling_trusted = true;
+  result.status = Status::LowConfidence("refused");
+  EXPECT_FALSE(TrackConfirmedBy(options, result));
+  options.ceiling_height = 2.5;  // A given ceiling: nothing searched, nothing to confirm.
+  EXPECT_TRUE(TrackConfirmedBy(options, result));
+  options.ceiling_height = 0;
+  options.estimate_ceiling = false;
+  EXPECT_TRUE(TrackConfirmedBy(options, result));
 }
 
 TEST_F(JunctionTrackingTest, AFrameFarFromThePreviousOneIsSearchedWhole) {
@@ -113,6 +174,32 @@ TEST_F(JunctionTrackingTest, TheTwoThreadPipelineTracks) {
       });
   EXPECT_EQ(delivered, kFrames);
   EXPECT_GE(tracked, kFrames - 4);
+}
+
+// The two-thread pipeline gives what Recover gives frame by frame: its extraction thread waits
+// for a searched frame's confirmation before it tracks the next, so with the ceiling search under
+// the drive's ceiling no frame is tracked there either.
+TEST_F(JunctionTrackingTest, TheTwoThreadPipelineWaitsForTheConfirmation) {
+  RecoverDepthOptions below;
+  below.ceiling.max_height = 2.2;
+  std::unique_ptr<DepthRecoverer> recoverer;
+  ASSERT_TRUE(DepthRecoverer::Create(below, &recoverer).ok());
+  FramePipeline pipeline(*recoverer, 4);
+  int next = 0, tracked = 0;
+  const int64_t delivered = pipeline.Run(
+      [&](PipelineFrame* frame) {
+        if (next >= kFrames) return false;
+        frame->name = std::to_string(next);
+        frame->camera = &camera_;
+        frame->image = frames_[next++].bgr;
+        return true;
+      },
+      [&](PipelineFrame&& frame) {
+        tracked += frame.result.junctions_tracked;
+        return true;
+      });
+  EXPECT_EQ(delivered, kFrames);
+  EXPECT_EQ(tracked, 0);
 }
 
 TEST(JunctionTrackingOptionsTest, ABadTrackerOptionIsNamed) {
