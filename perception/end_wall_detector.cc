@@ -7,6 +7,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "corridor_depth/corridor_frame.h"
+#include "kernels/max_filter.h"
 #include "perception/appearance.h"
 #include "perception/corridor_projection.h"
 #include "perception/oriented_edges.h"
@@ -20,7 +21,11 @@ class EdgeProbe {
  public:
   EdgeProbe(const cv::Mat& edges, const Camera& camera, const CorridorGeometry& g, int reach)
       : camera_(camera), distorted_(camera.HasDistortion()), r_(g.pitch, g.yaw), reach_(reach) {
-    cv::dilate(edges, near_, cv::Mat::ones(2 * reach + 1, 2 * reach + 1, CV_8U));
+    // cv::dilate by a (2 reach + 1)-square, into the thread's buffer (kept from frame to frame;
+    // one probe at a time).
+    thread_local cv::Mat thread_near;
+    MaxFilterSquare(edges, reach, &thread_near);
+    near_ = thread_near;
   }
 
   // Raw pixel of (x, y, z), or false when behind the camera or within `reach` of the border.
