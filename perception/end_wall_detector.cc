@@ -254,7 +254,9 @@ Status DetectEndWall(const cv::Mat& full_bgr, const Camera& full_camera, const C
   const CorridorRotation<double>& r = probe.rotation();
   const Vec3<double> n = r.FloorNormal(), axis = r.Axis();
   const double h = g.camera_height, xl = -g.LeftDistance(), xr = g.RightDistance();
-  std::vector<double> distances;
+  thread_local std::vector<double> thread_distances;  // Keeps its memory from call to call.
+  std::vector<double>& distances = thread_distances;
+  distances.clear();
   for (int i = 0; i < o.samples; ++i) {
     const double x = xl + (xr - xl) * (0.05 + 0.9 * (i + 0.5) / o.samples);
     cv::Point p;
