@@ -156,9 +156,9 @@ OrientedEdges ComputeOrientedEdges(const cv::Mat& bgr, int top, int bottom, Imag
     if (!ColorCannyEdges(bgr, from, to, &dx, &dy, &edges)) return out;  // Not 8-bit: no edges.
   }
   const cv::Rect band(0, top - from, bgr.cols, bottom - top);
-  // A copy of the band: the result stays valid when the cache is filled again (cv::Mat::create
-  // keeps a buffer of the same size, which a view would share).
-  out.edges = edges(band).clone();
+  // A view of the band, not a copy: it stays valid when the cache is filled again, for
+  // EdgesFromTop empties the cache first (its matrices get new buffers; the view keeps the old).
+  out.edges = edges(band);
   // Each edge pixel's orientation bit, OR-ed over its 3x3 neighbourhood. The scratch is the
   // thread's, reused from search to search.
   thread_local std::vector<uchar> thread_bits, thread_along;
