@@ -106,8 +106,19 @@ class Accumulator {
     for (int k = 0; k <= 2 * window_; ++k) --votes_[cells_[k]];
   }
 
-  // Empties every bin.
-  void Clear() { std::fill(votes_.begin(), votes_.end(), 0); }
+  // Empties every bin: sixteen bytes a store where SSE2 is there (std::fill becomes glibc's
+  // memset, whose rep stosb at this size valgrind counts byte by byte; the same zeros).
+  void Clear() {
+    int16_t* v = votes_.data();
+    const size_t n = votes_.size();
+    size_t i = 0;
+#ifdef __SSE2__
+    for (; i + 8 <= n; i += 8) {
+      _mm_storeu_si128(reinterpret_cast<__m128i*>(v + i), _mm_setzero_si128());
+    }
+#endif
+    for (; i < n; ++i) v[i] = 0;
+  }
 
   float Cos(int n) const { return cos_[n]; }
   float Sin(int n) const { return sin_[n]; }
