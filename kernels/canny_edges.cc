@@ -254,9 +254,12 @@ Status CannyFromGradients(const cv::Mat& dx, const cv::Mat& dy, double low, doub
   // The border rows now, each image row (with its border columns) just before it is suppressed:
   // every cell is kNever until a candidate is marked. (Row by row instead of one fill of the
   // whole map up front: the same bytes, written while the row is in the cache.)
-  map.resize(static_cast<size_t>(rows + 2) * step);
-  std::fill(map.begin(), map.begin() + step, kNever);
-  std::fill(map.end() - step, map.end(), kNever);
+  // The buffer only grows: a resize up after a smaller image's call would zero the bytes added,
+  // which are all written here anyway.
+  const size_t map_size = static_cast<size_t>(rows + 2) * step;
+  if (map.size() < map_size) map.resize(map_size);
+  std::fill(map.data(), map.data() + step, kNever);
+  std::fill(map.data() + map_size - step, map.data() + map_size, kNever);
   std::vector<int>& stack = scratch.stack;
   stack.clear();
   stack.reserve(1024);

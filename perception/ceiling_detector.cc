@@ -253,7 +253,10 @@ Status DetectCeiling(const cv::Mat& bgr, const Camera& camera, const CorridorGeo
   // Refine: every edge pixel within 2 px of an accepted line gives H_c from its ray and wall.
   const CorridorRotation<double> r(g.pitch, g.yaw);
   const double h = g.camera_height;
-  std::vector<double> heights;
+  // In the thread's buffer, which keeps its memory from search to search.
+  thread_local std::vector<double> thread_heights;
+  std::vector<double>& heights = thread_heights;
+  heights.clear();
   heights.reserve(static_cast<size_t>(10) * lines.samples);  // Two sides, five rows a sample.
   const Vec3<double> n = r.FloorNormal(), m = r.WallNormal();
   for (int side = 0; side < 2; ++side) {

@@ -7,6 +7,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "corridor_depth/corridor_frame.h"
+#include "kernels/max_filter.h"
 #include "perception/appearance.h"
 #include "perception/corridor_projection.h"
 #include "perception/oriented_edges.h"
@@ -20,7 +21,11 @@ class EdgeProbe {
  public:
   EdgeProbe(const cv::Mat& edges, const Camera& camera, const CorridorGeometry& g, int reach)
       : camera_(camera), distorted_(camera.HasDistortion()), r_(g.pitch, g.yaw), reach_(reach) {
-    cv::dilate(edges, near_, cv::Mat::ones(2 * reach + 1, 2 * reach + 1, CV_8U));
+    // cv::dilate by a (2 reach + 1)-square, into the thread's buffer (kept from frame to frame;
+    // one probe at a time).
+    thread_local cv::Mat thread_near;
+    MaxFilterSquare(edges, reach, &thread_near);
+    near_ = thread_near;
   }
 
   // Raw pixel of (x, y, z), or false when behind the camera or within `reach` of the border.
@@ -249,7 +254,9 @@ Status DetectEndWall(const cv::Mat& full_bgr, const Camera& full_camera, const C
   const CorridorRotation<double>& r = probe.rotation();
   const Vec3<double> n = r.FloorNormal(), axis = r.Axis();
   const double h = g.camera_height, xl = -g.LeftDistance(), xr = g.RightDistance();
-  std::vector<double> distances;
+  thread_local std::vector<double> thread_distances;  // Keeps its memory from call to call.
+  std::vector<double>& distances = thread_distances;
+  distances.clear();
   for (int i = 0; i < o.samples; ++i) {
     const double x = xl + (xr - xl) * (0.05 + 0.9 * (i + 0.5) / o.samples);
     cv::Point p;

@@ -49,10 +49,19 @@ PairSearch FirstLook(const std::vector<cv::Vec4f>& segments,
                      const FloorCues& cues, const Eigen::Vector2d& size,
                      const BaseboardBandTest& band) {
   PairSearch search;
-  search.lines = MergeSegments(segments, options.merge_angle_deg, options.merge_distance_px);
-  AddJunctionCandidates(search.lines, prior.min_length, prior, cues, &search);
-  SelectPair(size, band, cues, &search);
+  FirstLook(segments, options, prior, cues, size, band, &search);
   return search;
+}
+
+void FirstLook(const std::vector<cv::Vec4f>& segments, const JunctionDetectorOptions& options,
+               const JunctionScenePrior& prior, const FloorCues& cues,
+               const Eigen::Vector2d& size, const BaseboardBandTest& band, PairSearch* search) {
+  MergeSegments(segments, options.merge_angle_deg, options.merge_distance_px, &search->lines);
+  search->left.clear();
+  search->right.clear();
+  search->pair = SelectedPair();
+  AddJunctionCandidates(search->lines, prior.min_length, prior, cues, search);
+  SelectPair(size, band, cues, search);
 }
 
 bool SecondLook(const EdgeSegments& found, const SegmentOptions& segment_options,

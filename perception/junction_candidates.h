@@ -62,6 +62,10 @@ PairSearch FirstLook(const std::vector<cv::Vec4f>& segments,
                      const JunctionDetectorOptions& options, const JunctionScenePrior& prior,
                      const FloorCues& cues, const Eigen::Vector2d& size,
                      const BaseboardBandTest& band);
+// The same into *search (replaced; its vectors' memory kept).
+void FirstLook(const std::vector<cv::Vec4f>& segments, const JunctionDetectorOptions& options,
+               const JunctionScenePrior& prior, const FloorCues& cues,
+               const Eigen::Vector2d& size, const BaseboardBandTest& band, PairSearch* search);
 
 // The second look for shorter pieces (the relaxed Hough options on the same edges), when the
 // first found no pair: a faint junction broken by door bottoms gives pieces too short for the

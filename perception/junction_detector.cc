@@ -235,11 +235,11 @@ bool NoiseOrTexture(const cv::Mat& edges, const JunctionDetectorOptions& options
 }
 
 // Stage: the candidates (scene prior, boundary scores against the floor's appearance) and the
-// best pair: the first look, then the second when it finds none (which, when taken, replaces
-// result->segments and sets result->relaxed_hough).
-PairSearch SearchPair(const cv::Mat& color, const JunctionSearchRegion& region,
-                      const EdgeSegments& found, const SegmentOptions& segment_options,
-                      const JunctionDetectorOptions& options, JunctionPair* result) {
+// best pair, into *chosen: the first look, then the second when it finds none (which, when taken,
+// replaces result->segments and sets result->relaxed_hough).
+void SearchPair(const cv::Mat& color, const JunctionSearchRegion& region,
+                const EdgeSegments& found, const SegmentOptions& segment_options,
+                const JunctionDetectorOptions& options, JunctionPair* result, PairSearch* chosen) {
   const int width = color.cols, height = color.rows;
   const JunctionScenePrior prior = MakeJunctionScenePrior(options, width, height);
   FloorCues cues;
@@ -252,15 +252,22 @@ PairSearch SearchPair(const cv::Mat& color, const JunctionSearchRegion& region,
   cues.floor_band.min_texture_density = options.floor_band_texture_density;
   const bool floor_colour_rules =
       options.stripe_floor_likeness > 0 || options.inside_floor_likeness > 0;
+  // What the band measure reads, referred to by one pointer (a capture std::function keeps
+  // without allocating).
+  struct BandMeasure {
+    const EdgeSegments* found;
+    GradientGrid grid;
+    BandEdgeOptions options;
+  };
+  BandMeasure band_measure{&found, SearchRegionGrid(region), BandEdgeOptions()};
   if (options.floor_band_min_across > 0 || floor_colour_rules) {
-    BandEdgeOptions band_options;
-    band_options.margin = 3.0 * region.scale;  // Clear of the lines' own edges (the 5x5 reach).
-    const GradientGrid grid = SearchRegionGrid(region);
-    cues.floor_band.measure = [&found, grid, band_options](const MergedLine& inner,
-                                                           const MergedLine& outer,
-                                                           const Eigen::Vector2d& vp) {
-      return MeasureBandEdges(found.edges, found.dx, found.dy, grid, inner.line, outer.line, vp,
-                              band_options);
+    // Clear of the lines' own edges (the 5x5 reach).
+    band_measure.options.margin = 3.0 * region.scale;
+    cues.floor_band.measure = [m = &band_measure](const MergedLine& inner,
+                                                  const MergedLine& outer,
+                                                  const Eigen::Vector2d& vp) {
+      return MeasureBandEdges(m->found->edges, m->found->dx, m->found->dy, m->grid, inner.line,
+                              outer.line, vp, m->options);
     };
     cues.floor_band.boundary = [&cues](const MergedLine& outer) {
       return BoundaryScore(cues.roi, SampleBelowLine(cues.roi, outer, cues.roi_top, cues.scale),
@@ -278,16 +285,15 @@ PairSearch SearchPair(const cv::Mat& color, const JunctionSearchRegion& region,
     };
   }
   const Eigen::Vector2d size(width, height);
-  PairSearch chosen = FirstLook(found.segments, options, prior, cues, size, band);
-  if (chosen.pair.left < 0 && options.relaxed_hough_threshold > 0) {
+  FirstLook(found.segments, options, prior, cues, size, band, chosen);
+  if (chosen->pair.left < 0 && options.relaxed_hough_threshold > 0) {
     std::vector<cv::Vec4f> segments;
-    if (SecondLook(found, segment_options, region, options, prior, cues, size, band, &chosen,
+    if (SecondLook(found, segment_options, region, options, prior, cues, size, band, chosen,
                    &segments)) {
       result->segments = std::move(segments);
       result->relaxed_hough = true;
     }
   }
-  return chosen;
 }
 
 // Stage, when a side has no candidate: the refusal, with the other side's one junction kept
@@ -385,11 +391,16 @@ Status DetectJunctionsIn(const cv::Mat& bgr, const cv::Mat* halved,
                                     options.max_work_width, &region);
   if (!status.ok()) return status;
   const SegmentOptions segment_options = JunctionSegmentOptions(options, height, region.scale);
-  const EdgeSegments found = FindEdgeSegments(region, segment_options);
+  EdgeSegments found = FindEdgeSegments(region, segment_options);
   if (NoiseOrTexture(found.edges, options, &why)) return NoCorridor(result, why);
-  result->segments = found.segments;
-  // The candidates and the best pair of them.
-  const PairSearch chosen = SearchPair(color, region, found, segment_options, options, result);
+  // The candidates and the best pair of them, in the thread's buffer, whose vectors keep their
+  // memory from frame to frame.
+  thread_local PairSearch thread_chosen;
+  SearchPair(color, region, found, segment_options, options, result, &thread_chosen);
+  const PairSearch& chosen = thread_chosen;
+  // The segments are the result's (moved, not copied: nothing reads them further), unless the
+  // second look has put its own there.
+  if (!result->relaxed_hough) result->segments = std::move(found.segments);
   const FullResolutionRefit refit =
       MakeFullResolutionRefit(color, region.scale, options, found.canny_high);
   // The edge pixels in image coordinates, in the thread's buffer (it keeps its memory).

@@ -123,6 +123,13 @@ MergedLine LineThrough(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
 
 std::vector<MergedLine> MergeSegments(const std::vector<cv::Vec4f>& segments, double angle_deg,
                                       double distance_px) {
+  std::vector<MergedLine> merged;
+  MergeSegments(segments, angle_deg, distance_px, &merged);
+  return merged;
+}
+
+void MergeSegments(const std::vector<cv::Vec4f>& segments, double angle_deg, double distance_px,
+                   std::vector<MergedLine>* merged_lines) {
   // Longest first, so that each group is seeded by its most reliable segment. The order and the
   // groups' points live in the thread's scratch, which keeps its memory from call to call.
   thread_local MergeScratch thread_scratch;
@@ -136,7 +143,8 @@ std::vector<MergedLine> MergeSegments(const std::vector<cv::Vec4f>& segments, do
   };
   std::sort(order.begin(), order.end(), [&](int a, int b) { return length(a) > length(b); });
   const double cos_tol = std::cos(angle_deg * M_PI / 180.0);
-  std::vector<MergedLine> merged;
+  std::vector<MergedLine>& merged = *merged_lines;
+  merged.clear();
   merged.reserve(segments.size());
   std::vector<std::vector<Eigen::Vector2d>>& members = scratch.members;
   std::vector<std::vector<double>>& weights = scratch.weights;
@@ -186,7 +194,6 @@ std::vector<MergedLine> MergeSegments(const std::vector<cv::Vec4f>& segments, do
     SetExtentAlongLine(members[group], &m);
     m.covered = std::min(covered, m.length);
   }
-  return merged;
 }
 
 }  // namespace corridor

@@ -58,6 +58,9 @@ std::vector<cv::Vec4f> HoughSegments(const EdgeSegments& found, const SegmentOpt
 // (length-weighted total least squares of their endpoints).
 std::vector<MergedLine> MergeSegments(const std::vector<cv::Vec4f>& segments, double angle_deg,
                                       double distance_px);
+// The same into *merged (replaced; its memory kept).
+void MergeSegments(const std::vector<cv::Vec4f>& segments, double angle_deg, double distance_px,
+                   std::vector<MergedLine>* merged);
 
 // A MergedLine through two points (normalised, normal pointing down, extent from the points).
 MergedLine LineThrough(const Eigen::Vector2d& a, const Eigen::Vector2d& b);

@@ -78,9 +78,8 @@ void OrNeighbourhoods(const cv::Mat& bits, std::vector<uchar>* along_rows, cv::M
   }
 }
 
-}  // namespace
-
-int OrientationBin(int gx, int gy) {
+// OrientationBin, inlined into the band loop below.
+CORRIDOR_ALWAYS_INLINE inline int Bin(int gx, int gy) {
   // Turned into [0, 180] degrees: an edge and its reverse are the same edge (gy = 0 with gx < 0
   // stays at 180 degrees, the last bin, as atan2 puts it). In double: no integer overflow.
   const double flip = gy < 0 ? -1.0 : 1.0;
@@ -95,6 +94,10 @@ int OrientationBin(int gx, int gy) {
   const int vertical = y == 0 ? 0 : 4;
   return x > 0 ? right : (x < 0 ? left : vertical);
 }
+
+}  // namespace
+
+int OrientationBin(int gx, int gy) { return Bin(gx, gy); }
 
 bool ColorCannyEdges(const cv::Mat& bgr, int from, int to, cv::Mat* dx, cv::Mat* dy,
                      cv::Mat* edges, cv::Mat* smooth) {
@@ -156,9 +159,9 @@ OrientedEdges ComputeOrientedEdges(const cv::Mat& bgr, int top, int bottom, Imag
     if (!ColorCannyEdges(bgr, from, to, &dx, &dy, &edges)) return out;  // Not 8-bit: no edges.
   }
   const cv::Rect band(0, top - from, bgr.cols, bottom - top);
-  // A copy of the band: the result stays valid when the cache is filled again (cv::Mat::create
-  // keeps a buffer of the same size, which a view would share).
-  out.edges = edges(band).clone();
+  // A view of the band, not a copy: it stays valid when the cache is filled again, for
+  // EdgesFromTop empties the cache first (its matrices get new buffers; the view keeps the old).
+  out.edges = edges(band);
   // Each edge pixel's orientation bit, OR-ed over its 3x3 neighbourhood. The scratch is the
   // thread's, reused from search to search.
   thread_local std::vector<uchar> thread_bits, thread_along;
@@ -171,7 +174,7 @@ OrientedEdges ComputeOrientedEdges(const cv::Mat& bgr, int top, int bottom, Imag
     const short* gx = dx.ptr<short>(r + band.y);
     const short* gy = dy.ptr<short>(r + band.y);
     ForEachNonZeroByte(out.edges.ptr<uchar>(r), 0, band.width, [&](int u) {
-      b[u] = static_cast<uchar>(1u << OrientationBin(gx[u], gy[u]));
+      b[u] = static_cast<uchar>(1u << Bin(gx[u], gy[u]));
     });
   }
   // One row more than the band, not part of `near`: OrientedLineHits reads four bytes at a pixel.

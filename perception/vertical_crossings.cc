@@ -108,6 +108,55 @@ Run BandRunBaseline(const cv::Mat& bgr, const BandPoint& p, const Eigen::Vector2
 }
 
 #ifdef CORRIDOR_AVX2_VARIANTS
+// SumSobel of the three pixels (u0, v), (u0 + 1, v), (u0 + 2, v), all at least 1 px inside the
+// image, from one 16-byte read of each of the three rows (the five pixels u0 - 1 .. u0 + 3): the
+// first two in the two halves of one AVX2 register, the third alone. *gx and *gy get
+// (gx0, gx1, gx2, 0) and (gy0, gy1, gy2, 0); the same integers (no sum comes near 2^15). False
+// (nothing written) when a read would leave the image's data.
+__attribute__((target("avx2"))) inline bool SumSobel3Avx2(const uchar* data, size_t step,
+                                                          const uchar* end, int u0, int v,
+                                                          __m128i* gx, __m128i* gy) {
+  const uchar* r1 = data + step * static_cast<size_t>(v) + 3 * (u0 - 1);
+  const uchar* r0 = r1 - step;
+  const uchar* r2 = r1 + step;
+  if (r2 + 16 > end) return false;
+  // The window's pixel p is bytes 3p .. 3p + 2; the centres are pixels 1 and 2 (the two halves)
+  // and 3 (alone).
+  const __m256i wx = _mm256_setr_epi8(-1, -1, -1, 0, 0, 0, 1, 1, 1, 0, 0, 0, 0, 0, 0, 0,  //
+                                      0, 0, 0, -1, -1, -1, 0, 0, 0, 1, 1, 1, 0, 0, 0, 0);
+  const __m256i wx2 = _mm256_setr_epi8(-2, -2, -2, 0, 0, 0, 2, 2, 2, 0, 0, 0, 0, 0, 0, 0,  //
+                                       0, 0, 0, -2, -2, -2, 0, 0, 0, 2, 2, 2, 0, 0, 0, 0);
+  const __m256i wy = _mm256_setr_epi8(1, 1, 1, 2, 2, 2, 1, 1, 1, 0, 0, 0, 0, 0, 0, 0,  //
+                                      0, 0, 0, 1, 1, 1, 2, 2, 2, 1, 1, 1, 0, 0, 0, 0);
+  const __m128i wx3 = _mm_setr_epi8(0, 0, 0, 0, 0, 0, -1, -1, -1, 0, 0, 0, 1, 1, 1, 0);
+  const __m128i wx23 = _mm_setr_epi8(0, 0, 0, 0, 0, 0, -2, -2, -2, 0, 0, 0, 2, 2, 2, 0);
+  const __m128i wy3 = _mm_setr_epi8(0, 0, 0, 0, 0, 0, 1, 1, 1, 2, 2, 2, 1, 1, 1, 0);
+  const __m128i a = _mm_loadu_si128(reinterpret_cast<const __m128i*>(r0));
+  const __m128i b = _mm_loadu_si128(reinterpret_cast<const __m128i*>(r1));
+  const __m128i c = _mm_loadu_si128(reinterpret_cast<const __m128i*>(r2));
+  const __m256i aa = _mm256_broadcastsi128_si256(a), bb = _mm256_broadcastsi128_si256(b);
+  const __m256i cc = _mm256_broadcastsi128_si256(c);
+  const __m256i x = _mm256_add_epi16(
+      _mm256_add_epi16(_mm256_maddubs_epi16(aa, wx), _mm256_maddubs_epi16(bb, wx2)),
+      _mm256_maddubs_epi16(cc, wx));
+  const __m256i y = _mm256_sub_epi16(_mm256_maddubs_epi16(cc, wy), _mm256_maddubs_epi16(aa, wy));
+  // Each half: (x, y, x, y) of its centre.
+  const __m256i pairs = _mm256_madd_epi16(_mm256_hadd_epi16(x, y), _mm256_set1_epi16(1));
+  const __m256i sums = _mm256_hadd_epi32(pairs, pairs);
+  const __m128i x3 = _mm_add_epi16(
+      _mm_add_epi16(_mm_maddubs_epi16(a, wx3), _mm_maddubs_epi16(b, wx23)),
+      _mm_maddubs_epi16(c, wx3));
+  const __m128i y3 = _mm_sub_epi16(_mm_maddubs_epi16(c, wy3), _mm_maddubs_epi16(a, wy3));
+  const __m128i pairs3 = _mm_madd_epi16(_mm_hadd_epi16(x3, y3), _mm_set1_epi16(1));
+  const __m128i sums3 = _mm_hadd_epi32(pairs3, pairs3);  // (x, y, x, y) of the third.
+  const __m128i first_two = _mm_unpacklo_epi32(_mm256_castsi256_si128(sums),
+                                               _mm256_extracti128_si256(sums, 1));  // x0 x1 y0 y1
+  const __m128i third = _mm_unpacklo_epi32(sums3, _mm_setzero_si128());         // x2 0 y2 0
+  *gx = _mm_unpacklo_epi64(first_two, third);
+  *gy = _mm_unpackhi_epi64(first_two, third);
+  return true;
+}
+
 // RoundHalfAway of four doubles: truncation, the exact remainder, then the whole step.
 __attribute__((target("avx2"))) inline __m128i RoundHalfAwayAvx2(__m256d x) {
   const __m256d t = _mm256_round_pd(x, _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC);
@@ -147,16 +196,28 @@ __attribute__((target("avx2"))) Run BandRunAvx2(const cv::Mat& bgr, const BandPo
                     RoundHalfAwayAvx2(_mm256_add_pd(_mm256_set1_pd(q.x()), step_x)));
     _mm_store_si128(reinterpret_cast<__m128i*>(vs),
                     RoundHalfAwayAvx2(_mm256_add_pd(_mm256_set1_pd(q.y()), step_y)));
-    alignas(32) double gxs[4] = {0, 0, 0, 0}, gys[4] = {0, 0, 0, 0};
-    for (int d = 0; d < 3; ++d) {
-      const int u = us[d], v = vs[d];
-      if (u < 1 || v < 1 || u > max_u || v > max_v) continue;
-      int gx = 0, gy = 0;
-      SumSobelAvx2(bgr, data, step, end, u, v, &gx, &gy);
-      gxs[d] = gx;
-      gys[d] = gy;
+    __m256d gx, gy;
+    __m128i gx3, gy3;
+    // Three neighbours along one row, all inside (the usual case, the band running up): their
+    // gradients together.
+    if (vs[0] == vs[1] && vs[1] == vs[2] && us[1] == us[0] + 1 && us[2] == us[0] + 2 &&
+        us[0] >= 1 && us[2] <= max_u && vs[0] >= 1 && vs[0] <= max_v &&
+        SumSobel3Avx2(data, step, end, us[0], vs[0], &gx3, &gy3)) {
+      gx = _mm256_cvtepi32_pd(gx3);
+      gy = _mm256_cvtepi32_pd(gy3);
+    } else {
+      alignas(32) double gxs[4] = {0, 0, 0, 0}, gys[4] = {0, 0, 0, 0};
+      for (int d = 0; d < 3; ++d) {
+        const int u = us[d], v = vs[d];
+        if (u < 1 || v < 1 || u > max_u || v > max_v) continue;
+        int sx = 0, sy = 0;
+        SumSobelAvx2(bgr, data, step, end, u, v, &sx, &sy);
+        gxs[d] = sx;
+        gys[d] = sy;
+      }
+      gx = _mm256_load_pd(gxs);
+      gy = _mm256_load_pd(gys);
     }
-    const __m256d gx = _mm256_load_pd(gxs), gy = _mm256_load_pd(gys);
     const __m256d g_across = _mm256_andnot_pd(
         sign, _mm256_add_pd(_mm256_mul_pd(gx, ax), _mm256_mul_pd(gy, ay)));
     const __m256d g_up = _mm256_andnot_pd(

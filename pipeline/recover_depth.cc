@@ -71,6 +71,13 @@ Status DepthRecoverer::Recover(const cv::Mat& image, const Camera& camera,
 Status DepthRecoverer::Detect(const cv::Mat& image, const Camera& camera,
                               RecoverDepthResult* result, JunctionTrack* track) const {
   const auto start = Clock::now();
+  // The previous frame's handover is used again when nothing else holds it (it was made here,
+  // not const): one allocation less a frame.
+  std::shared_ptr<FrameHandover> handover;
+  if (result->handover != nullptr && result->handover.use_count() == 1) {
+    handover = std::const_pointer_cast<FrameHandover>(std::move(result->handover));
+    *handover = FrameHandover();
+  }
   *result = RecoverDepthResult();
   const auto finish = [&](Status status) {
     result->status = status;
@@ -83,7 +90,7 @@ Status DepthRecoverer::Detect(const cv::Mat& image, const Camera& camera,
   cv::Mat bgr;
   Status status = ToBgr(image, camera, &bgr);
   if (!status.ok()) return finish(status);
-  auto handover = std::make_shared<FrameHandover>();
+  if (handover == nullptr) handover = std::make_shared<FrameHandover>();
   handover->image = bgr;
   result->handover = handover;
   result->camera = camera;
