@@ -151,7 +151,7 @@ __attribute__((target("avx2"))) inline bool SumSobel3Avx2(const uchar* data, siz
   const __m128i sums3 = _mm_hadd_epi32(pairs3, pairs3);  // (x, y, x, y) of the third.
   const __m128i first_two = _mm_unpacklo_epi32(_mm256_castsi256_si128(sums),
                                                _mm256_extracti128_si256(sums, 1));  // x0 x1 y0 y1
-  const __m128i third = _mm_unpacklo_epi32(sums3, _mm_setzero_si128());         // x2 0 y2 0
+  const __m128i third = _mm_unpacklo_epi32(sums3, _mm_setzero_si128());             // x2 0 y2 0
   *gx = _mm_unpacklo_epi64(first_two, third);
   *gy = _mm_unpackhi_epi64(first_two, third);
   return true;
