@@ -32,6 +32,17 @@ class JunctionTrackingTest : public ::testing::Test {
     }
   }
 
+  // The drive's frames in order, for a FramePipeline.
+  FramePipeline::Source DriveSource() const {
+    return [next = 0](PipelineFrame* frame) mutable {
+      if (next >= kFrames) return false;
+      frame->name = std::to_string(next);
+      frame->camera = &camera_;
+      frame->image = frames_[next++].bgr;
+      return true;
+    };
+  }
+
   // Runs the drive as a sequence; returns the frames whose junctions were tracked.
   int RunDrive(bool track_junctions, std::vector<double>* width_errors,
                RecoverDepthOptions options = RecoverDepthOptions()) const {
@@ -154,15 +165,9 @@ TEST_F(JunctionTrackingTest, TheTwoThreadPipelineTracks) {
   std::unique_ptr<DepthRecoverer> recoverer;
   ASSERT_TRUE(DepthRecoverer::Create(RecoverDepthOptions(), &recoverer).ok());
   FramePipeline pipeline(*recoverer, 2);
-  int next = 0, tracked = 0, delivered = 0;
+  int tracked = 0, delivered = 0;
   pipeline.Run(
-      [&](PipelineFrame* frame) {
-        if (next >= kFrames) return false;
-        frame->name = std::to_string(next);
-        frame->camera = &camera_;
-        frame->image = frames_[next++].bgr;
-        return true;
-      },
+      DriveSource(),
       [&](PipelineFrame&& frame) {
         EXPECT_TRUE(frame.result.status.ok()) << frame.result.status.ToString();
         EXPECT_EQ(frame.index, delivered);
@@ -185,15 +190,9 @@ TEST_F(JunctionTrackingTest, TheTwoThreadPipelineWaitsForTheConfirmation) {
   std::unique_ptr<DepthRecoverer> recoverer;
   ASSERT_TRUE(DepthRecoverer::Create(below, &recoverer).ok());
   FramePipeline pipeline(*recoverer, 4);
-  int next = 0, tracked = 0;
+  int tracked = 0;
   const int64_t delivered = pipeline.Run(
-      [&](PipelineFrame* frame) {
-        if (next >= kFrames) return false;
-        frame->name = std::to_string(next);
-        frame->camera = &camera_;
-        frame->image = frames_[next++].bgr;
-        return true;
-      },
+      DriveSource(),
       [&](PipelineFrame&& frame) {
         tracked += frame.result.junctions_tracked;
         return true;
