@@ -44,15 +44,6 @@ void SelectPair(const Eigen::Vector2d& size, const BaseboardBandTest& band, cons
                          cues.floor_band);
 }
 
-PairSearch FirstLook(const std::vector<cv::Vec4f>& segments,
-                     const JunctionDetectorOptions& options, const JunctionScenePrior& prior,
-                     const FloorCues& cues, const Eigen::Vector2d& size,
-                     const BaseboardBandTest& band) {
-  PairSearch search;
-  FirstLook(segments, options, prior, cues, size, band, &search);
-  return search;
-}
-
 void FirstLook(const std::vector<cv::Vec4f>& segments, const JunctionDetectorOptions& options,
                const JunctionScenePrior& prior, const FloorCues& cues,
                const Eigen::Vector2d& size, const BaseboardBandTest& band, PairSearch* search) {

@@ -57,12 +57,8 @@ void AddJunctionCandidates(const std::vector<MergedLine>& lines, double shortest
 void SelectPair(const Eigen::Vector2d& size, const BaseboardBandTest& band, const FloorCues& cues,
                 PairSearch* search);
 
-// The first look: `segments` (image pixels) merged, their candidates and the best pair.
-PairSearch FirstLook(const std::vector<cv::Vec4f>& segments,
-                     const JunctionDetectorOptions& options, const JunctionScenePrior& prior,
-                     const FloorCues& cues, const Eigen::Vector2d& size,
-                     const BaseboardBandTest& band);
-// The same into *search (replaced; its vectors' memory kept).
+// The first look: `segments` (image pixels) merged, their candidates and the best pair, into
+// *search (replaced; its vectors' memory kept).
 void FirstLook(const std::vector<cv::Vec4f>& segments, const JunctionDetectorOptions& options,
                const JunctionScenePrior& prior, const FloorCues& cues,
                const Eigen::Vector2d& size, const BaseboardBandTest& band, PairSearch* search);
