@@ -85,10 +85,7 @@ int64_t FramePipeline::Run(const Source& source, const Sink& sink) {
                              sequence_ ? prior.Previous() : nullptr);
       if (confirm && frame->result.junctions_tracked && !TrackConfirmedBy(options, frame->result)) {
         // As Recover does: tracked lines the ceiling does not confirm, the frame searched whole.
-        recoverer_.Detect(frame->image, *frame->camera, &frame->result, nullptr);
-        if (frame->result.ReadyToReconstruct()) {
-          recoverer_.Reconstruct(*frame->camera, &frame->result, prior.Previous());
-        }
+        recoverer_.Recover(frame->image, *frame->camera, &frame->result, prior.Previous());
         searched_again = true;
       }
       prior.Update(frame->result);

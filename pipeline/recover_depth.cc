@@ -51,14 +51,16 @@ Status DepthRecoverer::Recover(const cv::Mat& image, const Camera& camera,
                                RecoverDepthResult* result, const CorridorGeometry* previous,
                                JunctionTrack* track) const {
   const auto start = Clock::now();
-  Detect(image, camera, result, track);
-  if (result->ReadyToReconstruct()) Reconstruct(camera, result, previous);
+  const auto detect_and_reconstruct = [&](JunctionTrack* with) {
+    Detect(image, camera, result, with);
+    if (result->ReadyToReconstruct()) Reconstruct(camera, result, previous);
+  };
+  detect_and_reconstruct(track);
   if (track != nullptr && !TrackConfirmedBy(options_, *result)) {
     if (result->junctions_tracked) {
       // Tracked lines the frame's ceiling does not confirm: the frame is searched whole, and the
       // track goes on from that search, unconfirmed.
-      Detect(image, camera, result, nullptr);
-      if (result->ReadyToReconstruct()) Reconstruct(camera, result, previous);
+      detect_and_reconstruct(nullptr);
       track->Searched(result->junctions, image.size(), false);
     } else {
       track->Unconfirmed();
