@@ -312,4 +312,14 @@ double CorridorLineSupport(const cv::Mat& bgr, const Camera& camera, const Corri
   return OrientedLineHits(line.data(), o.samples, band).Fraction(CountedSamples(o));
 }
 
+double BestFloorLineSupportNear(const cv::Mat& bgr, const Camera& camera,
+                                const CorridorGeometry& g, double x, double spread,
+                                const CeilingDetectorOptions& options, ImageEdges* edges) {
+  double best = 0;
+  for (double r = 1 / spread; r <= spread + 1e-9; r += 0.01) {
+    best = std::max(best, CorridorLineSupport(bgr, camera, g, x * r, g.camera_height, options, edges));
+  }
+  return best;
+}
+
 }  // namespace corridor

@@ -33,4 +33,12 @@ double CorridorLineSupport(const cv::Mat& bgr, const Camera& camera, const Corri
                            double x, double y, const CeilingDetectorOptions& options,
                            ImageEdges* edges = nullptr);
 
+// The best CorridorLineSupport of the floor junctions (x * r, camera height), r from 1 / spread to
+// spread in steps of 0.01: how well a junction near x (give or take its uncertainty, the factor
+// `spread`) follows edges. Only g's rotation and camera height are used.
+double BestFloorLineSupportNear(const cv::Mat& bgr, const Camera& camera,
+                                const CorridorGeometry& g, double x, double spread,
+                                const CeilingDetectorOptions& options,
+                                ImageEdges* edges = nullptr);
+
 }  // namespace corridor

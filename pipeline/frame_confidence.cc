@@ -71,6 +71,17 @@ double FrameConfidence(const FrameEvidence& e, std::string* why) {
                     100 * (std::exp(e.ceiling_disagreement) - 1));
     });
   }
+  // Two ceiling sides no one height explains, with a line where a wall would agree with them: two
+  // layouts fit the image's lines (a baseboard's top or a rail on one wall, a runner's edge on the
+  // floor), and this one may be the wrong one. Refused on its own.
+  if (e.ceiling_split >= 0) {
+    factor(0.5, [&] {
+      return Format("the two ceiling sides are %.0f%% apart", 100 * (std::exp(e.ceiling_split) - 1)) +
+             ", no one ceiling fits both, and a junction where a wall would agree with them "
+             "follows edges: two layouts fit (a baseboard's top, a rail or a runner's edge taken "
+             "for the floor's edge?)";
+    });
+  }
   if (e.corrected) {
     factor(0.9, [] {
       return std::string(
@@ -90,7 +101,8 @@ double FrameConfidence(const FrameEvidence& e, std::string* why) {
 FrameEvidence GatherFrameEvidence(const JunctionPair& junctions, const WorkingImage& search,
                                   const CorridorGeometry& geometry, double ceiling_disagreement,
                                   bool corrected, int moved_side,
-                                  const VerticalCrossingOptions& options) {
+                                  const VerticalCrossingOptions& options,
+                                  double ceiling_split) {
   FrameEvidence evidence;
   const JunctionLine* lines[2] = {nullptr, nullptr};
   if (junctions.status.ok()) {
@@ -109,6 +121,7 @@ FrameEvidence GatherFrameEvidence(const JunctionPair& junctions, const WorkingIm
   evidence.ceiling_disagreement = ceiling_disagreement;
   evidence.corrected = corrected;
   evidence.moved_side = moved_side;
+  evidence.ceiling_split = ceiling_split;
   return evidence;
 }
 

@@ -19,10 +19,12 @@ double FrameConfidence(const FrameEvidence& evidence, std::string* why = nullptr
 // The evidence for a frame's geometry: the junction lines' own confidence (the one line, when one
 // junction is hidden), the vertical edges crossing them, counted on `search` (the frame at the
 // search resolution; none when it is empty), and what the reconstruction did (the ceiling sides'
-// disagreement, -1 when not compared; a correction; the wall the inner-line check moved).
+// disagreement, -1 when not compared; a correction; the wall the inner-line check moved), and the
+// ceiling's split (CeilingSplit, -1 none).
 FrameEvidence GatherFrameEvidence(const JunctionPair& junctions, const WorkingImage& search,
                                   const CorridorGeometry& geometry, double ceiling_disagreement,
                                   bool corrected, int moved_side,
-                                  const VerticalCrossingOptions& options);
+                                  const VerticalCrossingOptions& options,
+                                  double ceiling_split = -1);
 
 }  // namespace corridor

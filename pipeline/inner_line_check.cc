@@ -55,21 +55,6 @@ double WallBand(const cv::Mat& bgr, const Camera& camera, const CorridorGeometry
   return BandContrast(bgr, floor, up, down, 0);
 }
 
-// The best support (CorridorLineSupport) of a floor junction on `side`'s wall at a distance
-// within a factor `spread` of `distance`: where a move would put the junction, give or take the
-// move's own uncertainty (the ceiling heights' ratio). Only g's rotation and camera height are
-// used: the line is placed by its own distance.
-double BestSupportNear(const cv::Mat& bgr, const Camera& camera,
-                       const CeilingDetectorOptions& ceiling, const CorridorGeometry& g, int side,
-                       double distance, double spread, ImageEdges* edges) {
-  const double x = side == 0 ? -distance : distance;
-  double best = 0;
-  for (double r = 1 / spread; r <= spread + 1e-9; r += 0.01) {
-    best = std::max(best, CorridorLineSupport(bgr, camera, g, x * r, g.camera_height, ceiling, edges));
-  }
-  return best;
-}
-
 }  // namespace
 
 bool InnerLineCheckOptions::Check(std::string* why) const {
@@ -187,8 +172,9 @@ InnerLineCheck CheckInnerLine(const cv::Mat& bgr, const Camera& camera,
       // floor; and the junction below it shows on edges.
       const double b = options.max_baseboard_height;
       if (b > 0 && h > b && move > h / (h - b)) return check;
-      check.target_support =
-          BestSupportNear(bgr, camera, ceiling, *geometry, outer, distance[outer], 1.08, edges);
+      check.target_support = BestFloorLineSupportNear(
+          bgr, camera, *geometry, outer == 0 ? -distance[outer] : distance[outer], 1.08, ceiling,
+          edges);
       if (check.target_support < options.min_target_support) return check;
       geometry->SetWallDistances(distance[0], distance[1]);
       check.moved = true;
@@ -213,8 +199,8 @@ InnerLineCheck CheckInnerLine(const cv::Mat& bgr, const Camera& camera,
   distance[inner] *= factor;
   // The true junction shows on edges somewhere along its view, between the boxes that hid it; a
   // wall's plain face (where a correct wall would be moved out to) does not.
-  check.target_support =
-      BestSupportNear(bgr, camera, ceiling, *geometry, inner, distance[inner], 1.08, edges);
+  check.target_support = BestFloorLineSupportNear(
+      bgr, camera, *geometry, inner == 0 ? -distance[inner] : distance[inner], 1.08, ceiling, edges);
   if (check.target_support < options.min_target_support) return check;
   geometry->SetWallDistances(distance[0], distance[1]);
   check.moved = true;

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "pipeline/ceiling_agreement.h"
+#include "pipeline/ceiling_split.h"
 #include "pipeline/frame_handover.h"
 #include "pipeline/image_input.h"
 #include "pipeline/one_junction.h"
@@ -229,11 +230,17 @@ Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* res
   // cannot tell the wrong wall from the ceiling overrule it (HoldWidth).
   const CorridorGeometry* hold_from = result->junctions.status.ok() ? previous : nullptr;
   double own_confidence = -1;  // Computed once, when a hold or a scaling is considered.
+  // The ceiling's split (ceiling_split.h) of the walls the ceiling estimate was searched for.
+  const auto ceiling_split = [&] {
+    return search_ceiling ? CeilingSplit(search.bgr, search.camera, geometry, result->ceiling,
+                                         options_.ceiling, options_.ceiling_split, &edges)
+                          : -1.0;
+  };
   const auto own_confidence_low = [&](double disagreement) {
     if (own_confidence < 0) {
       own_confidence = FrameConfidence(GatherFrameEvidence(
           result->junctions, search, geometry, disagreement, result->lower_line_taken,
-          result->moved_side, options_.vertical_crossings));
+          result->moved_side, options_.vertical_crossings, ceiling_split()));
     }
     return own_confidence < options_.min_confidence;
   };
@@ -283,7 +290,7 @@ Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* res
       search_ceiling ? CeilingDisagreement(result->ceiling, geometry.camera_height) : -1,
       !junctions.status.ok() || result->width_held || result->walls_scaled ||
           result->lower_line_taken,
-      result->moved_side, options_.vertical_crossings);
+      result->moved_side, options_.vertical_crossings, ceiling_split());
   result->confidence = FrameConfidence(result->evidence);
   NoteRescue(own_confidence, options_.min_confidence, result);
   if (result->confidence < options_.min_confidence) {

@@ -43,6 +43,8 @@ bool RecoverDepthOptions::Check(std::string* why) const {
     reason = "inner_line: " + reason;
   } else if (!vertical_crossings.Check(&reason)) {
     reason = "vertical_crossings: " + reason;
+  } else if (!ceiling_split.Check(&reason)) {
+    reason = "ceiling_split: " + reason;
   }
   if (reason.empty()) return true;
   if (why != nullptr) *why = reason;

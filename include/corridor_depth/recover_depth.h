@@ -56,6 +56,7 @@ struct RecoverDepthOptions {
   EndWallDetectorOptions end_wall;             // End-wall search (beyond the paper).
   double min_confidence = 0.6;                 // Frames whose confidence (RecoverDepthResult::confidence) is lower are refused (kLowConfidence); 0 = never. Chosen on generated sets (docs/results.md).
   VerticalCrossingOptions vertical_crossings;  // The confidence's count of vertical edges crossing the junctions.
+  CeilingSplitOptions ceiling_split;           // The confidence's test of two ceiling sides that no one height explains.
   int search_max_width = 640;                  // Wider images are halved (pyrDown) until they fit, one copy shared by the ceiling and end-wall searches, px (0 = full resolution).
 
   bool Check(std::string* why) const;

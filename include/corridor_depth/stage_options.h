@@ -101,6 +101,19 @@ struct EndWallDetectorOptions {
   bool Check(std::string* why) const;
 };
 
+// Two ceiling junctions, each plainly seen, that no one ceiling height explains, where moving one
+// wall to the height the other's ceiling gives puts a junction on a line that follows the image's
+// edges: there are two layouts, and the image's lines fit both (a baseboard's top, a rail or a
+// runner's edge on both sides, and the true junction fainter). The one reported may be either, so
+// the frame's confidence drops (FrameConfidence): right or refused.
+struct CeilingSplitOptions {
+  double min_visible_support = 0.6;      // Each side's own best ceiling junction on edges over this fraction of its samples in view.
+  double max_joint_support = 0.3;        // At the ceiling height the two sides best share, one side's junction on edges over less than this fraction.
+  double min_disagreement = 0.18;        // The two sides' heights above the camera this much (relative) apart at least (a head-mounted camera's roll, up to 3 degrees, which the model lacks, puts right frames' sides up to 17% apart).
+  double min_alternative_support = 0.5;  // A floor junction where either move would put it (within 8%) on edges over this fraction of its view.
+  bool Check(std::string* why) const;
+};
+
 struct VerticalCrossingOptions {
   double band_height = 0.25;        // How far above (and as far in pixels below) the junction to look, m on the wall.
   double min_band_px = 5;           // Junction points whose band is shorter are not examined, px.

@@ -66,6 +66,10 @@ struct FrameEvidence {
   // The side whose wall the inner-line check moved out to where its ceiling junction agrees with
   // the other side's (0 left, 1 right; -1 none): the geometry then rests on the ceiling's evidence.
   int moved_side = -1;
+  // |log| of the ratio of the two ceiling sides' heights above the camera when each side is plainly
+  // seen, no one height explains both, and a wall moved to agree with the other side's ceiling
+  // would stand on a line that follows edges (CeilingSplitOptions); -1 otherwise.
+  double ceiling_split = -1;
 };
 
 }  // namespace corridor
