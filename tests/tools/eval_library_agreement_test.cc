@@ -89,7 +89,7 @@ std::vector<std::map<std::string, std::string>> ReadCsv(const std::string& path)
 void MakeDataset(const std::string& root) {
   for (synth::ScenePreset preset : synth::PaperPreset()) {
     if (preset.name != "Cord_E02" && preset.name != "Cord_H01") continue;
-    preset.poses = {preset.poses.at(0), preset.poses.at(5), preset.poses.at(10)};
+    preset.poses = {preset.poses.at(2), preset.poses.at(5), preset.poses.at(10)};
     ASSERT_TRUE(synth::WriteScene(root, preset, nullptr).ok()) << preset.name;
   }
   std::ofstream(root + "/Cord_H01/rgb/000099.png", std::ios::trunc) << "broken";
