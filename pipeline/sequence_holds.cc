@@ -124,10 +124,21 @@ void HoldCeiling(const CorridorGeometry* previous, double max_disagreement, doub
   std::ostringstream how;
   how.precision(2);
   how << std::fixed;
-  if (found && disagreement < 0 && !frame_doubted) {
+  // A side strong enough to count (min_support) whose height agrees with the trusted one (within
+  // max_disagreement) confirms it with this frame's own evidence: that wall is where the recent
+  // frames had it, and the frame's ceiling, off from it, came with the other wall.
+  bool side_confirms = false;
+  const double h = g->camera_height, above_trusted = held.ceiling_height - h;
+  for (int side = 0; side < 2; ++side) {
+    const double above = result->ceiling.side_height[side] - h;
+    side_confirms |= result->ceiling.side_support[side] >= min_support && above > 0.1 &&
+                     above_trusted > 0.1 &&
+                     std::abs(std::log(above / above_trusted)) <= max_disagreement;
+  }
+  if (found && disagreement < 0 && !frame_doubted && !side_confirms) {
     how << "ceiling sides too weak to compare: the frame's own " << g->ceiling_height
-        << " m kept (its own evidence is strong), not the previous frame's " << held.ceiling_height
-        << " m";
+        << " m kept (its own evidence is strong, and no side of it confirms the previous frame's "
+        << held.ceiling_height << " m)";
     result->AddNote(how.str());
     return;
   }

@@ -1,14 +1,17 @@
 // A sequence does not change a frame whose own evidence is strong: a ceiling the frame found, whose
 // two sides were only too weak to compare, is kept over the trusted one on a frame not in doubt
-// (HoldCeiling); a tracked frame whose own whole search is confirmed by its ceiling keeps that
-// search's answer (OwnSearchKept). Numbers worked by hand: camera 0.5 m high; the recent frames
-// trusted a ceiling at 2.9 m; this frame found its ceiling at 2.5 m.
+// unless a strong side of it confirms the trusted height (HoldCeiling), and then contests the
+// trusted height (SequencePrior); a tracked frame whose own whole search found other lines and is
+// confirmed by its ceiling keeps that search's answer (OwnSearchKept). Numbers worked by hand:
+// camera 0.5 m high; the recent frames trusted a ceiling at 2.9 m (2.4 m above the camera); this
+// frame found its ceiling at 2.5 m (2.0 m above it, |log(2.0 / 2.4)| = 0.182).
 #include <string>
 
 #include <gtest/gtest.h>
 
 #include "pipeline/ceiling_agreement.h"
 #include "pipeline/sequence_holds.h"
+#include "pipeline/sequence_prior.h"
 
 namespace corridor {
 namespace {
@@ -46,7 +49,9 @@ Frame FoundCeiling(double left_height, double left_support, double right_height,
 }
 
 TEST(OwnEvidenceTest, ACeilingWhoseSidesAreTooWeakToCompareIsKeptOnAFrameNotInDoubt) {
-  // The right side's support, 0.30, is below 0.45: the sides cannot be compared (-1).
+  // The right side's support, 0.30, is below 0.45: the sides cannot be compared (-1). The strong
+  // left side, 2.5 m, is 0.182 (|log ratio|) from the trusted 2.9 m, more than 0.10: no
+  // confirmation.
   Frame f = FoundCeiling(2.5, 0.8, 2.5, 0.30);
   ASSERT_EQ(CeilingDisagreement(f.result.ceiling, 0.5, kMinSupport), -1);
   const CorridorGeometry previous = Trusted();
@@ -59,6 +64,57 @@ TEST(OwnEvidenceTest, ACeilingWhoseSidesAreTooWeakToCompareIsKeptOnAFrameNotInDo
   EXPECT_EQ(f.geometry.ceiling_height, 2.5);
   EXPECT_NE(f.result.fallback.find("the frame's own 2.50 m kept"), std::string::npos)
       << f.result.fallback;
+}
+
+TEST(OwnEvidenceTest, AStrongSideThatAgreesWithTheTrustedCeilingConfirmsIt) {
+  // The strong left side at 2.85 m: 2.35 m above the camera, |log(2.35 / 2.4)| = 0.021 <= 0.10.
+  // The weak right one (support 0.30) at 2.15 m pulled the frame's ceiling down to 2.5 m.
+  Frame f = FoundCeiling(2.85, 0.8, 2.15, 0.30);
+  const CorridorGeometry previous = Trusted();
+  HoldCeiling(&previous, kMaxDisagreement, kMinSupport, /*frame_doubted=*/false, &f.geometry,
+              &f.result);
+  EXPECT_TRUE(f.result.ceiling_held);
+  EXPECT_EQ(f.geometry.ceiling_height, 2.9);
+  // The same height on the weak side confirms nothing.
+  Frame weak = FoundCeiling(2.15, 0.8, 2.85, 0.30);
+  HoldCeiling(&previous, kMaxDisagreement, kMinSupport, /*frame_doubted=*/false, &weak.geometry,
+              &weak.result);
+  EXPECT_FALSE(weak.result.ceiling_held);
+  EXPECT_EQ(weak.geometry.ceiling_height, 2.5);
+}
+
+TEST(OwnEvidenceTest, AKeptCeilingFarFromTheTrustedOneContestsIt) {
+  SequencePrior prior;
+  RecoverDepthResult trusted;
+  trusted.status = Status::Ok();
+  trusted.has_geometry = true;
+  trusted.geometry = Trusted();
+  trusted.ceiling.found = true;
+  trusted.ceiling.height = 2.9;
+  trusted.ceiling_trusted = true;
+  prior.Update(trusted);
+  ASSERT_NE(prior.Previous(), nullptr);
+  EXPECT_EQ(prior.Previous()->ceiling_height, 2.9);
+
+  // Kept at 2.8 m: 2.3 m above the camera, |log(2.3 / 2.4)| = 0.043, within 0.15: still 2.9 m.
+  RecoverDepthResult near = trusted;
+  near.ceiling_trusted = false;
+  near.geometry.ceiling_height = 2.8;
+  near.ceiling.height = 2.8;
+  prior.Update(near);
+  EXPECT_EQ(prior.Previous()->ceiling_height, 2.9);
+
+  // Kept at 2.5 m: 0.182 from it, beyond 0.15: no height is carried.
+  RecoverDepthResult far = near;
+  far.geometry.ceiling_height = 2.5;
+  far.ceiling.height = 2.5;
+  prior.Update(far);
+  ASSERT_NE(prior.Previous(), nullptr);
+  EXPECT_FALSE(prior.Previous()->HasCeiling());
+
+  // The next frame whose sides agree is trusted again.
+  prior.Update(trusted);
+  EXPECT_EQ(prior.Previous()->ceiling_height, 2.9);
 }
 
 TEST(OwnEvidenceTest, ADoubtedFrameTakesTheTrustedCeiling) {
@@ -106,31 +162,50 @@ TEST(OwnEvidenceTest, AgreeingSidesAreTrustedAndNothingIsHeld) {
   EXPECT_EQ(f.geometry.ceiling_height, 2.5);
 }
 
-RecoverDepthResult OwnSearch(bool ok, bool ceiling_trusted) {
-  RecoverDepthResult own;
-  own.status = ok ? Status::Ok() : Status::LowConfidence("confidence 0.40 is below 0.60");
-  own.has_geometry = ok;
-  own.ceiling_trusted = ceiling_trusted;
-  return own;
+// A vertical line u = u0 supported from row 250 to row 400.
+JunctionLine Vertical(double u0) {
+  JunctionLine line;
+  line.line = Eigen::Vector3d(1, 0, -u0);
+  line.near_end = Eigen::Vector2d(u0, 400);
+  line.far_end = Eigen::Vector2d(u0, 250);
+  return line;
 }
 
-TEST(OwnEvidenceTest, AnOwnSearchConfirmedByItsCeilingIsKept) {
-  const RecoverDepthOptions options;  // The ceiling is searched.
-  EXPECT_TRUE(OwnSearchKept(options, OwnSearch(true, true)));
-  EXPECT_FALSE(OwnSearchKept(options, OwnSearch(true, false)));   // Its ceiling does not confirm.
-  EXPECT_FALSE(OwnSearchKept(options, OwnSearch(false, false)));  // Refused alone.
-  RecoverDepthResult tracked = OwnSearch(true, true);
-  tracked.junctions_tracked = true;  // Not a whole search.
-  EXPECT_FALSE(OwnSearchKept(options, tracked));
+RecoverDepthResult Search(bool ok, bool ceiling_trusted, double left_u) {
+  RecoverDepthResult r;
+  r.status = ok ? Status::Ok() : Status::LowConfidence("confidence 0.40 is below 0.60");
+  r.has_geometry = ok;
+  r.ceiling_trusted = ceiling_trusted;
+  r.junctions.status = Status::Ok();
+  r.junctions.left = Vertical(left_u);
+  r.junctions.right = Vertical(500);
+  return r;
+}
+
+TEST(OwnEvidenceTest, AnOwnSearchOfOtherLinesConfirmedByItsCeilingIsKept) {
+  const RecoverDepthOptions options;  // The ceiling is searched; lines within 2 px are the same.
+  RecoverDepthResult tracked = Search(true, true, 100);
+  tracked.junctions_tracked = true;
+  // The own search's left line at u = 110: 10 px from the tracked one at both ends.
+  EXPECT_TRUE(OwnSearchKept(options, tracked, Search(true, true, 110)));
+  EXPECT_FALSE(OwnSearchKept(options, tracked, Search(true, false, 110)));  // Not confirmed.
+  EXPECT_FALSE(OwnSearchKept(options, tracked, Search(false, false, 110)));  // Refused alone.
+  // At u = 101.5, 1.5 px away: the same lines, and the tracked fit stands.
+  EXPECT_FALSE(OwnSearchKept(options, tracked, Search(true, true, 101.5)));
+  RecoverDepthResult also_tracked = Search(true, true, 110);
+  also_tracked.junctions_tracked = true;  // Not a whole search.
+  EXPECT_FALSE(OwnSearchKept(options, tracked, also_tracked));
 }
 
 TEST(OwnEvidenceTest, WithoutACeilingSearchNothingConfirmsTheOwnSearch) {
+  RecoverDepthResult tracked = Search(true, true, 100);
+  tracked.junctions_tracked = true;
   RecoverDepthOptions given;
   given.ceiling_height = 2.7;
-  EXPECT_FALSE(OwnSearchKept(given, OwnSearch(true, true)));
+  EXPECT_FALSE(OwnSearchKept(given, tracked, Search(true, true, 110)));
   RecoverDepthOptions none;
   none.estimate_ceiling = false;
-  EXPECT_FALSE(OwnSearchKept(none, OwnSearch(true, true)));
+  EXPECT_FALSE(OwnSearchKept(none, tracked, Search(true, true, 110)));
 }
 
 }  // namespace
