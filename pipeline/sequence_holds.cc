@@ -139,6 +139,7 @@ void HoldCeiling(const CorridorGeometry* previous, double max_disagreement, doub
     how << "ceiling sides too weak to compare: the frame's own " << g->ceiling_height
         << " m kept (its own evidence is strong, and no side of it confirms the previous frame's "
         << held.ceiling_height << " m)";
+    result->ceiling_kept = true;
     result->AddNote(how.str());
     return;
   }

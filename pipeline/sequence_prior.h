@@ -48,13 +48,13 @@ class SequencePrior {
                          : previous_.ceiling_height;
     if (result.ceiling.found && !result.ceiling_held) PushRecent(result.ceiling.height, &ceilings_);
     const double h = result.geometry.camera_height;
-    // A frame that kept its own ceiling against the trusted one (HoldCeiling: found, not trusted,
-    // not held), more than kCeilingOutvoted from it, contests it: the trusted height came with
-    // other frames' walls, this one with the frame's own, and the sequence no longer knows which
-    // is right, so it holds none until a frame's two sides agree again.
+    // A frame that kept its own ceiling against the trusted one (RecoverDepthResult::ceiling_kept),
+    // more than kCeilingOutvoted from it, contests it: the trusted height came with other frames'
+    // walls, this one with the frame's own, and the sequence no longer knows which is right, so it
+    // holds none until a frame's two sides agree again.
     const double own = result.geometry.ceiling_height;
-    if (result.ceiling.found && !result.ceiling_trusted && !result.ceiling_held && trusted > h &&
-        own > h && std::abs(std::log((own - h) / (trusted - h))) > kCeilingOutvoted) {
+    if (result.ceiling_kept && trusted > h && own > h &&
+        std::abs(std::log((own - h) / (trusted - h))) > kCeilingOutvoted) {
       trusted = 0;
     }
     if (trusted > h && static_cast<int>(ceilings_.size()) >= kMinRecentCeilings) {

@@ -62,6 +62,7 @@ TEST(OwnEvidenceTest, ACeilingWhoseSidesAreTooWeakToCompareIsKeptOnAFrameNotInDo
   EXPECT_FALSE(f.result.ceiling_held);
   EXPECT_FALSE(f.result.ceiling_trusted);
   EXPECT_EQ(f.geometry.ceiling_height, 2.5);
+  EXPECT_TRUE(f.result.ceiling_kept);
   EXPECT_NE(f.result.fallback.find("the frame's own 2.50 m kept"), std::string::npos)
       << f.result.fallback;
 }
@@ -99,6 +100,7 @@ TEST(OwnEvidenceTest, AKeptCeilingFarFromTheTrustedOneContestsIt) {
   // Kept at 2.8 m: 2.3 m above the camera, |log(2.3 / 2.4)| = 0.043, within 0.15: still 2.9 m.
   RecoverDepthResult near = trusted;
   near.ceiling_trusted = false;
+  near.ceiling_kept = true;
   near.geometry.ceiling_height = 2.8;
   near.ceiling.height = 2.8;
   prior.Update(near);
@@ -111,6 +113,13 @@ TEST(OwnEvidenceTest, AKeptCeilingFarFromTheTrustedOneContestsIt) {
   prior.Update(far);
   ASSERT_NE(prior.Previous(), nullptr);
   EXPECT_FALSE(prior.Previous()->HasCeiling());
+
+  // A frame merely not trusted (its ceiling not kept against a hold) contests nothing.
+  prior.Update(trusted);
+  RecoverDepthResult untrusted = far;
+  untrusted.ceiling_kept = false;
+  prior.Update(untrusted);
+  EXPECT_EQ(prior.Previous()->ceiling_height, 2.9);
 
   // The next frame whose sides agree is trusted again.
   prior.Update(trusted);
