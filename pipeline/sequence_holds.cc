@@ -4,7 +4,6 @@
 #include <cmath>
 #include <sstream>
 
-#include "perception/junction_tracker.h"
 #include "pipeline/ceiling_agreement.h"
 
 namespace corridor {
@@ -20,14 +19,10 @@ bool TrackConfirmedBy(const RecoverDepthOptions& options, const RecoverDepthResu
   return !ceiling_searched || (result.status.ok() && result.ceiling_trusted);
 }
 
-bool OwnSearchKept(const RecoverDepthOptions& options, const RecoverDepthResult& tracked,
-                   const RecoverDepthResult& own) {
+bool OwnSearchKept(const RecoverDepthOptions& options, const RecoverDepthResult& own) {
   const bool ceiling_searched = options.ceiling_height <= 0 && options.estimate_ceiling;
-  if (!ceiling_searched || !own.status.ok() || !own.has_geometry || own.junctions_tracked ||
-      !own.ceiling_trusted) {
-    return false;
-  }
-  return !SameJunctions(tracked.junctions, own.junctions, options.tracker.agreement_px);
+  return ceiling_searched && own.status.ok() && own.has_geometry && !own.junctions_tracked &&
+         own.ceiling_trusted;
 }
 
 bool NoteRescue(double own_confidence, double min_confidence, RecoverDepthResult* result) {

@@ -33,16 +33,14 @@ bool FrameInDoubt(double own_confidence, double min_confidence, double ceiling_d
 // given ceiling height, or none estimated) there is nothing to confirm: true.
 bool TrackConfirmedBy(const RecoverDepthOptions& options, const RecoverDepthResult& result);
 
-// Whether a tracked frame (its junctions the tracker's, `tracked`, confirmed by its ceiling) takes
-// instead the answer of its own whole search, `own`. Only an answer that is ok and whose two
-// ceiling sides, each searched alone, agree with its walls (ceiling_trusted) is the frame's own
-// strong evidence. When it found other lines than the tracked ones (SameJunctions within
-// agreement_px), the sequence does not overrule it: a tracked line may have drifted onto a line
-// the frame's own search would not take. When it found the same lines, the tracked fit (the
-// edge points in a narrow band around the line) stands. Without a ceiling search nothing confirms
-// the frame's own search: false.
-bool OwnSearchKept(const RecoverDepthOptions& options, const RecoverDepthResult& tracked,
-                   const RecoverDepthResult& own);
+// Whether a tracked frame (its junctions the tracker's, confirmed by its ceiling) takes instead
+// the answer of its own whole search, `own`: when that answer is ok and its two ceiling sides,
+// each searched alone, agree with its walls (ceiling_trusted), the frame's own evidence is strong
+// and the sequence does not change it (a tracked line, even the same line, fits its points a few
+// millimetres differently from the searched one, and may have drifted onto a line the frame's own
+// search would not take). The tracked lines stand only for a frame whose own search fails or is
+// not confirmed. Without a ceiling search nothing confirms the frame's own search: false.
+bool OwnSearchKept(const RecoverDepthOptions& options, const RecoverDepthResult& own);
 
 // When a frame whose own confidence was below min_confidence ends with its width held and a
 // confidence at or above it, notes that the hold rescued it. True when it did.

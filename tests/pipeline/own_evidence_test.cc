@@ -1,8 +1,8 @@
 // A sequence does not change a frame whose own evidence is strong: a ceiling the frame found, whose
 // two sides were only too weak to compare, is kept over the trusted one on a frame not in doubt
 // unless a strong side of it confirms the trusted height (HoldCeiling), and then contests the
-// trusted height (SequencePrior); a tracked frame whose own whole search found other lines and is
-// confirmed by its ceiling keeps that search's answer (OwnSearchKept). Numbers worked by hand:
+// trusted height (SequencePrior); a tracked frame whose own whole search is confirmed by its
+// ceiling keeps that search's answer (OwnSearchKept). Numbers worked by hand:
 // camera 0.5 m high; the recent frames trusted a ceiling at 2.9 m (2.4 m above the camera); this
 // frame found its ceiling at 2.5 m (2.0 m above it, |log(2.0 / 2.4)| = 0.182).
 #include <string>
@@ -171,50 +171,31 @@ TEST(OwnEvidenceTest, AgreeingSidesAreTrustedAndNothingIsHeld) {
   EXPECT_EQ(f.geometry.ceiling_height, 2.5);
 }
 
-// A vertical line u = u0 supported from row 250 to row 400.
-JunctionLine Vertical(double u0) {
-  JunctionLine line;
-  line.line = Eigen::Vector3d(1, 0, -u0);
-  line.near_end = Eigen::Vector2d(u0, 400);
-  line.far_end = Eigen::Vector2d(u0, 250);
-  return line;
+RecoverDepthResult OwnSearch(bool ok, bool ceiling_trusted) {
+  RecoverDepthResult own;
+  own.status = ok ? Status::Ok() : Status::LowConfidence("confidence 0.40 is below 0.60");
+  own.has_geometry = ok;
+  own.ceiling_trusted = ceiling_trusted;
+  return own;
 }
 
-RecoverDepthResult Search(bool ok, bool ceiling_trusted, double left_u) {
-  RecoverDepthResult r;
-  r.status = ok ? Status::Ok() : Status::LowConfidence("confidence 0.40 is below 0.60");
-  r.has_geometry = ok;
-  r.ceiling_trusted = ceiling_trusted;
-  r.junctions.status = Status::Ok();
-  r.junctions.left = Vertical(left_u);
-  r.junctions.right = Vertical(500);
-  return r;
-}
-
-TEST(OwnEvidenceTest, AnOwnSearchOfOtherLinesConfirmedByItsCeilingIsKept) {
-  const RecoverDepthOptions options;  // The ceiling is searched; lines within 2 px are the same.
-  RecoverDepthResult tracked = Search(true, true, 100);
-  tracked.junctions_tracked = true;
-  // The own search's left line at u = 110: 10 px from the tracked one at both ends.
-  EXPECT_TRUE(OwnSearchKept(options, tracked, Search(true, true, 110)));
-  EXPECT_FALSE(OwnSearchKept(options, tracked, Search(true, false, 110)));  // Not confirmed.
-  EXPECT_FALSE(OwnSearchKept(options, tracked, Search(false, false, 110)));  // Refused alone.
-  // At u = 101.5, 1.5 px away: the same lines, and the tracked fit stands.
-  EXPECT_FALSE(OwnSearchKept(options, tracked, Search(true, true, 101.5)));
-  RecoverDepthResult also_tracked = Search(true, true, 110);
-  also_tracked.junctions_tracked = true;  // Not a whole search.
-  EXPECT_FALSE(OwnSearchKept(options, tracked, also_tracked));
+TEST(OwnEvidenceTest, AnOwnSearchConfirmedByItsCeilingIsKept) {
+  const RecoverDepthOptions options;  // The ceiling is searched.
+  EXPECT_TRUE(OwnSearchKept(options, OwnSearch(true, true)));
+  EXPECT_FALSE(OwnSearchKept(options, OwnSearch(true, false)));   // Its ceiling does not confirm.
+  EXPECT_FALSE(OwnSearchKept(options, OwnSearch(false, false)));  // Refused alone.
+  RecoverDepthResult tracked = OwnSearch(true, true);
+  tracked.junctions_tracked = true;  // Not a whole search.
+  EXPECT_FALSE(OwnSearchKept(options, tracked));
 }
 
 TEST(OwnEvidenceTest, WithoutACeilingSearchNothingConfirmsTheOwnSearch) {
-  RecoverDepthResult tracked = Search(true, true, 100);
-  tracked.junctions_tracked = true;
   RecoverDepthOptions given;
   given.ceiling_height = 2.7;
-  EXPECT_FALSE(OwnSearchKept(given, tracked, Search(true, true, 110)));
+  EXPECT_FALSE(OwnSearchKept(given, OwnSearch(true, true)));
   RecoverDepthOptions none;
   none.estimate_ceiling = false;
-  EXPECT_FALSE(OwnSearchKept(none, tracked, Search(true, true, 110)));
+  EXPECT_FALSE(OwnSearchKept(none, OwnSearch(true, true)));
 }
 
 }  // namespace
