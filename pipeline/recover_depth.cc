@@ -67,8 +67,8 @@ Status DepthRecoverer::Recover(const cv::Mat& image, const Camera& camera,
     }
   } else if (track != nullptr && result->junctions_tracked && options_.ceiling_height <= 0 &&
              options_.estimate_ceiling) {
-    // Tracked lines the ceiling confirms: the frame's own whole search, when it is confirmed too, is
-    // kept instead (OwnSearchKept), and the track goes on from it.
+    // Tracked lines the ceiling confirms: the frame's own whole search, when it is confirmed
+    // too, is kept instead (OwnSearchKept), and the track goes on from it.
     RecoverDepthResult own;
     Detect(image, camera, &own, nullptr);
     if (own.ReadyToReconstruct()) Reconstruct(camera, &own, previous);

@@ -130,7 +130,11 @@ void HoldCeiling(const CorridorGeometry* previous, double max_disagreement, doub
                      above_trusted > 0.1 &&
                      std::abs(std::log(above / above_trusted)) <= max_disagreement;
   }
-  if (found && disagreement < 0 && !frame_doubted && !side_confirms) {
+  // Only a frame narrower than the recent frames: one wider whose ceiling is higher has both
+  // measured against walls put too far (a line on the wall, as a baseboard's top is, taken for a
+  // junction), and the trusted height is the better one.
+  const bool narrower = held.width > 0 && g->width < held.width;
+  if (found && disagreement < 0 && !frame_doubted && !side_confirms && narrower) {
     how << "ceiling sides too weak to compare: the frame's own " << g->ceiling_height
         << " m kept (its own evidence is strong, and no side of it confirms the previous frame's "
         << held.ceiling_height << " m)";

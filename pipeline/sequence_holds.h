@@ -75,10 +75,12 @@ void HoldWidth(const CorridorGeometry& previous, double max_change, bool frame_d
 // result->ceiling_trusted in every case. `previous` (may be null) carries a ceiling only when one
 // was trusted (SequencePrior).
 // A ceiling the frame found whose two sides were merely too weak to compare is no evidence against
-// it: a frame not in doubt (`frame_doubted`, as for HoldWidth) keeps it, with a note, unless one
-// of its sides strong enough to count (min_support) agrees with the trusted height (within
-// max_disagreement): that side's wall is where the recent frames had it, and confirms their
-// height. A ceiling's height is measured from its junctions with the walls: the trusted height came
+// it: a frame not in doubt (`frame_doubted`, as for HoldWidth) and narrower than the recent
+// frames (`previous->width`) keeps it, with a note, unless one of its sides strong enough to
+// count (min_support) agrees with the trusted height (within max_disagreement): that side's wall
+// is where the recent frames had it, and confirms their height. A wider frame's walls and ceiling
+// are both too far when a line on the wall (a baseboard's top) was taken for a junction: held.
+// A ceiling's height is measured from its junctions with the walls: the trusted height came
 // with the recent frames' walls, and a frame that measured its own ceiling with other walls would
 // otherwise get a ceiling no line of its image shows.
 void HoldCeiling(const CorridorGeometry* previous, double max_disagreement, double min_support,

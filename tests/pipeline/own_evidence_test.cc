@@ -2,9 +2,10 @@
 // two sides were only too weak to compare, is kept over the trusted one on a frame not in doubt
 // unless a strong side of it confirms the trusted height (HoldCeiling), and then contests the
 // trusted height (SequencePrior); a tracked frame whose own whole search is confirmed by its
-// ceiling keeps that search's answer (OwnSearchKept). Numbers worked by hand:
-// camera 0.5 m high; the recent frames trusted a ceiling at 2.9 m (2.4 m above the camera); this
-// frame found its ceiling at 2.5 m (2.0 m above it, |log(2.0 / 2.4)| = 0.182).
+// ceiling keeps that search's answer (OwnSearchKept). Numbers worked by hand: camera 0.5 m high;
+// the recent frames trusted a ceiling at 2.9 m (2.4 m above the camera) with walls 2.2 m apart;
+// this frame found its ceiling at 2.5 m (2.0 m above it, |log(2.0 / 2.4)| = 0.182) with walls
+// 2.0 m apart.
 #include <string>
 
 #include <gtest/gtest.h>
@@ -124,6 +125,19 @@ TEST(OwnEvidenceTest, AKeptCeilingFarFromTheTrustedOneContestsIt) {
   // The next frame whose sides agree is trusted again.
   prior.Update(trusted);
   EXPECT_EQ(prior.Previous()->ceiling_height, 2.9);
+}
+
+TEST(OwnEvidenceTest, AWiderFrameTakesTheTrustedCeiling) {
+  // The frame's walls 2.6 m apart against the recent frames' 2.2 m: its ceiling, off from the
+  // trusted one, came with walls put too far.
+  Frame f = FoundCeiling(2.5, 0.8, 2.5, 0.30);
+  f.geometry.SetWallDistances(1.3, 1.3);
+  const CorridorGeometry previous = Trusted();
+  HoldCeiling(&previous, kMaxDisagreement, kMinSupport, /*frame_doubted=*/false, &f.geometry,
+              &f.result);
+  EXPECT_TRUE(f.result.ceiling_held);
+  EXPECT_FALSE(f.result.ceiling_kept);
+  EXPECT_EQ(f.geometry.ceiling_height, 2.9);
 }
 
 TEST(OwnEvidenceTest, ADoubtedFrameTakesTheTrustedCeiling) {
