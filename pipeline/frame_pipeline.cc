@@ -27,6 +27,7 @@ int64_t FramePipeline::Run(const Source& source, const Sink& sink) {
   int64_t last_unconfirmed = -1;  // The last detected frame that did not confirm the track.
   int64_t last_researched = -1;   // The last tracked frame searched whole again, with its pair:
   JunctionPair researched;
+  bool researched_agrees = false;  // Whether that search found the tracked pair (its own kept).
   cv::Size researched_size;
   bool recovery_done = false;
   std::thread extraction([&] {
@@ -41,7 +42,7 @@ int64_t FramePipeline::Run(const Source& source, const Sink& sink) {
         std::unique_lock<std::mutex> lock(mutex);
         answered.wait(lock, [&] { return last_answered >= detected || recovery_done; });
         if (last_researched == detected) {
-          track.Searched(researched, researched_size, false);
+          track.Searched(researched, researched_size, researched_agrees);
         } else if (last_unconfirmed == detected) {
           track.Unconfirmed();
         }
@@ -61,7 +62,8 @@ int64_t FramePipeline::Run(const Source& source, const Sink& sink) {
   int64_t delivered = 0;
   bool stopped = false;
   SequencePrior prior;  // The last frame's geometry, for a hidden junction or a held width.
-  const auto answer = [&](int64_t index, bool confirmed, const PipelineFrame* searched_again) {
+  const auto answer = [&](int64_t index, bool confirmed, const PipelineFrame* searched_again,
+                          bool agrees) {
     {
       std::lock_guard<std::mutex> lock(mutex);
       last_answered = index;
@@ -70,16 +72,18 @@ int64_t FramePipeline::Run(const Source& source, const Sink& sink) {
         last_researched = index;
         researched = searched_again->result.junctions;
         researched_size = searched_again->image.size();
+        researched_agrees = agrees;
       }
     }
     answered.notify_one();
   };
   while (auto frame = queue.Pop()) {
     if (stopped) {  // Drain so that the extraction thread can finish.
-      answer(frame->index, true, nullptr);
+      answer(frame->index, true, nullptr, false);
       continue;
     }
     bool searched_again = false;
+    bool agrees = false;  // The frame's own search kept found the tracked pair.
     if (frame->result.ReadyToReconstruct() && frame->camera != nullptr) {
       recoverer_.Reconstruct(*frame->camera, &frame->result,
                              sequence_ ? prior.Previous() : nullptr);
@@ -87,12 +91,22 @@ int64_t FramePipeline::Run(const Source& source, const Sink& sink) {
         // As Recover does: tracked lines the ceiling does not confirm, the frame searched whole.
         recoverer_.Recover(frame->image, *frame->camera, &frame->result, prior.Previous());
         searched_again = true;
+      } else if (confirm && frame->result.junctions_tracked) {
+        // As Recover does: the frame's own whole search kept when its ceiling confirms it.
+        RecoverDepthResult own;
+        recoverer_.Recover(frame->image, *frame->camera, &own, prior.Previous());
+        if (OwnSearchKept(options, own)) {
+          agrees = SameJunctions(frame->result.junctions, own.junctions,
+                                 options.tracker.agreement_px);
+          frame->result = std::move(own);
+          searched_again = true;
+        }
       }
       prior.Update(frame->result);
     }
     const bool detected = frame->read_status.ok() && frame->camera != nullptr;
     answer(frame->index, !detected || TrackConfirmedBy(options, frame->result),
-           searched_again ? &*frame : nullptr);
+           searched_again ? &*frame : nullptr, agrees);
     ++delivered;
     if (!sink(std::move(*frame))) {
       stopped = true;

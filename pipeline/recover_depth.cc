@@ -66,6 +66,19 @@ Status DepthRecoverer::Recover(const cv::Mat& image, const Camera& camera,
     } else {
       track->Unconfirmed();
     }
+  } else if (track != nullptr && result->junctions_tracked && options_.ceiling_height <= 0 &&
+             options_.estimate_ceiling) {
+    // Tracked lines the ceiling confirms: the frame's own whole search, when it is confirmed
+    // too, is kept instead (OwnSearchKept), and the track goes on from it.
+    RecoverDepthResult own;
+    Detect(image, camera, &own, nullptr);
+    if (own.ReadyToReconstruct()) Reconstruct(camera, &own, previous);
+    if (OwnSearchKept(options_, own)) {
+      const bool agrees =
+          SameJunctions(result->junctions, own.junctions, options_.tracker.agreement_px);
+      *result = std::move(own);
+      track->Searched(result->junctions, image.size(), agrees);
+    }
   }
   result->times.total = SecondsSince(start);
   return result->status;
@@ -260,8 +273,17 @@ Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* res
     }
   }
   if (search_ceiling) {
+    // Whether the frame is in doubt only when a hold is considered: its confidence costs a look.
+    bool ceiling_doubted = true;
+    if (CeilingHoldConsidered(previous, options_.max_ceiling_disagreement,
+                              options_.ceiling.min_support, geometry, result)) {
+      const double disagreement = CeilingDisagreement(result->ceiling, geometry.camera_height);
+      own_confidence_low(disagreement);
+      ceiling_doubted = FrameInDoubt(own_confidence, options_.min_confidence, disagreement,
+                                     std::log(kCeilingSidesAgree), result->junctions_tracked);
+    }
     HoldCeiling(previous, options_.max_ceiling_disagreement, options_.ceiling.min_support,
-                &geometry, result);
+                ceiling_doubted, &geometry, result);
     if (hold_from != nullptr &&
         WallScaleFactor(*hold_from, options_.max_ceiling_change, geometry, *result) > 0) {
       const double disagreement = CeilingDisagreement(result->ceiling, geometry.camera_height);

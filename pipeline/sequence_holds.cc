@@ -19,6 +19,12 @@ bool TrackConfirmedBy(const RecoverDepthOptions& options, const RecoverDepthResu
   return !ceiling_searched || (result.status.ok() && result.ceiling_trusted);
 }
 
+bool OwnSearchKept(const RecoverDepthOptions& options, const RecoverDepthResult& own) {
+  const bool ceiling_searched = options.ceiling_height <= 0 && options.estimate_ceiling;
+  return ceiling_searched && own.status.ok() && own.has_geometry && !own.junctions_tracked &&
+         own.ceiling_trusted;
+}
+
 bool NoteRescue(double own_confidence, double min_confidence, RecoverDepthResult* result) {
   if (!result->width_held || !(own_confidence >= 0) || !(own_confidence < min_confidence) ||
       !(result->confidence >= min_confidence)) {
@@ -94,17 +100,48 @@ void HoldWidth(const CorridorGeometry& previous, double max_change, bool frame_d
   result->AddNote(how.str());
 }
 
+bool CeilingHoldConsidered(const CorridorGeometry* previous, double max_disagreement,
+                           double min_support, const CorridorGeometry& g,
+                           RecoverDepthResult* result) {
+  const double disagreement = CeilingDisagreement(result->ceiling, g.camera_height, min_support);
+  const bool found = result->ceiling.found && g.HasCeiling();
+  result->ceiling_trusted = found && disagreement >= 0 && disagreement <= max_disagreement;
+  return max_disagreement > 0 && previous != nullptr && previous->HasCeiling() &&
+         !result->ceiling_trusted;
+}
+
 void HoldCeiling(const CorridorGeometry* previous, double max_disagreement, double min_support,
-                 CorridorGeometry* g, RecoverDepthResult* result) {
+                 bool frame_doubted, CorridorGeometry* g, RecoverDepthResult* result) {
+  if (!CeilingHoldConsidered(previous, max_disagreement, min_support, *g, result)) return;
   const double disagreement = CeilingDisagreement(result->ceiling, g->camera_height, min_support);
   const bool found = result->ceiling.found && g->HasCeiling();
-  result->ceiling_trusted = found && disagreement >= 0 && disagreement <= max_disagreement;
-  if (!(max_disagreement > 0) || previous == nullptr || !previous->HasCeiling()) return;
-  if (result->ceiling_trusted) return;
   const CorridorGeometry& held = *previous;
   std::ostringstream how;
   how.precision(2);
   how << std::fixed;
+  // A side strong enough to count (min_support) whose height agrees with the trusted one (within
+  // max_disagreement) confirms it with this frame's own evidence: that wall is where the recent
+  // frames had it, and the frame's ceiling, off from it, came with the other wall.
+  bool side_confirms = false;
+  const double h = g->camera_height, above_trusted = held.ceiling_height - h;
+  for (int side = 0; side < 2; ++side) {
+    const double above = result->ceiling.side_height[side] - h;
+    side_confirms |= result->ceiling.side_support[side] >= min_support && above > 0.1 &&
+                     above_trusted > 0.1 &&
+                     std::abs(std::log(above / above_trusted)) <= max_disagreement;
+  }
+  // Only a frame narrower than the recent frames: one wider whose ceiling is higher has both
+  // measured against walls put too far (a line on the wall, as a baseboard's top is, taken for a
+  // junction), and the trusted height is the better one.
+  const bool narrower = held.width > 0 && g->width < held.width;
+  if (found && disagreement < 0 && !frame_doubted && !side_confirms && narrower) {
+    how << "ceiling sides too weak to compare: the frame's own " << g->ceiling_height
+        << " m kept (its own evidence is strong, and no side of it confirms the previous frame's "
+        << held.ceiling_height << " m)";
+    result->ceiling_kept = true;
+    result->AddNote(how.str());
+    return;
+  }
   if (found && disagreement >= 0) {
     how << "ceiling sides at " << result->ceiling.side_height[0] << " and "
         << result->ceiling.side_height[1] << " m disagree";

@@ -33,6 +33,15 @@ bool FrameInDoubt(double own_confidence, double min_confidence, double ceiling_d
 // given ceiling height, or none estimated) there is nothing to confirm: true.
 bool TrackConfirmedBy(const RecoverDepthOptions& options, const RecoverDepthResult& result);
 
+// Whether a tracked frame (its junctions the tracker's, confirmed by its ceiling) takes instead
+// the answer of its own whole search, `own`: when that answer is ok and its two ceiling sides,
+// each searched alone, agree with its walls (ceiling_trusted), the frame's own evidence is strong
+// and the sequence does not change it (a tracked line, even the same line, fits its points a few
+// millimetres differently from the searched one, and may have drifted onto a line the frame's own
+// search would not take). The tracked lines stand only for a frame whose own search fails or is
+// not confirmed. Without a ceiling search nothing confirms the frame's own search: false.
+bool OwnSearchKept(const RecoverDepthOptions& options, const RecoverDepthResult& own);
+
 // When a frame whose own confidence was below min_confidence ends with its width held and a
 // confidence at or above it, notes that the hold rescued it. True when it did.
 bool NoteRescue(double own_confidence, double min_confidence, RecoverDepthResult* result);
@@ -65,8 +74,24 @@ void HoldWidth(const CorridorGeometry& previous, double max_change, bool frame_d
 // side's height) takes the previous trusted height (result->ceiling_held). Sets
 // result->ceiling_trusted in every case. `previous` (may be null) carries a ceiling only when one
 // was trusted (SequencePrior).
+// A ceiling the frame found whose two sides were merely too weak to compare is no evidence against
+// it: a frame not in doubt (`frame_doubted`, as for HoldWidth) and narrower than the recent
+// frames (`previous->width`) keeps it, with a note, unless one of its sides strong enough to
+// count (min_support) agrees with the trusted height (within max_disagreement): that side's wall
+// is where the recent frames had it, and confirms their height. A wider frame's walls and ceiling
+// are both too far when a line on the wall (a baseboard's top) was taken for a junction: held.
+// A ceiling's height is measured from its junctions with the walls: the trusted height came
+// with the recent frames' walls, and a frame that measured its own ceiling with other walls would
+// otherwise get a ceiling no line of its image shows.
 void HoldCeiling(const CorridorGeometry* previous, double max_disagreement, double min_support,
-                 CorridorGeometry* g, RecoverDepthResult* result);
+                 bool frame_doubted, CorridorGeometry* g, RecoverDepthResult* result);
+
+// Whether HoldCeiling would replace the frame's ceiling with `previous`'s, not knowing yet whether
+// the frame is in doubt: the frame's ceiling is not trusted and a trusted one is carried. Sets
+// result->ceiling_trusted.
+bool CeilingHoldConsidered(const CorridorGeometry* previous, double max_disagreement,
+                           double min_support, const CorridorGeometry& g,
+                           RecoverDepthResult* result);
 
 // A ceiling whose two sides agree (trusted) but whose height above the camera is far from the last
 // trusted one's, with the width off by the same factor: both walls were put wrong by that factor

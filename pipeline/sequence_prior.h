@@ -25,7 +25,8 @@ namespace corridor {
 // kMinRecentCeilings of the last kRecent frames' own heights (measured, not held) have a median above the
 // camera more than kCeilingOutvoted (|log ratio|) from it, that median is carried instead: one
 // frame whose two sides agreed on a wrong line (window bands' tops on both walls) is outvoted by
-// the frames around it.
+// the frames around it. A frame not in doubt that kept its own ceiling (its two sides too weak to
+// compare) far from the trusted one contests it: no height is carried until one is trusted again.
 class SequencePrior {
  public:
   static constexpr int kMaxHeld = 3;
@@ -47,6 +48,15 @@ class SequencePrior {
                          : previous_.ceiling_height;
     if (result.ceiling.found && !result.ceiling_held) PushRecent(result.ceiling.height, &ceilings_);
     const double h = result.geometry.camera_height;
+    // A frame that kept its own ceiling against the trusted one (RecoverDepthResult::ceiling_kept),
+    // more than kCeilingOutvoted from it, contests it: the trusted height came with other frames'
+    // walls, this one with the frame's own, and the sequence no longer knows which is right, so it
+    // holds none until a frame's two sides agree again.
+    const double own = result.geometry.ceiling_height;
+    if (result.ceiling_kept && trusted > h && own > h &&
+        std::abs(std::log((own - h) / (trusted - h))) > kCeilingOutvoted) {
+      trusted = 0;
+    }
     if (trusted > h && static_cast<int>(ceilings_.size()) >= kMinRecentCeilings) {
       const double recent = Median(ceilings_);
       if (recent > h && std::abs(std::log((recent - h) / (trusted - h))) > kCeilingOutvoted) {

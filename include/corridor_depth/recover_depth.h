@@ -86,6 +86,7 @@ struct RecoverDepthResult {
   bool width_kept = false;         // True when a much narrower width was kept against the hold (the frame's own evidence strong); a sequence does not take it as a recent width.
   bool walls_scaled = false;       // True when both walls were scaled to the previous trusted ceiling (max_ceiling_change).
   bool ceiling_held = false;       // True when the previous frame's ceiling height replaced this frame's (max_ceiling_disagreement).
+  bool ceiling_kept = false;       // True when the frame kept its own ceiling, its sides too weak to compare, against the previous frame's (its own evidence strong); a sequence then holds no ceiling while the two are far apart.
   bool junctions_tracked = false;  // True when the junctions were found near the previous frame's (TrackJunctions), not by a whole search.
   bool ceiling_trusted = false;    // True when the ceiling search found the ceiling and both sides, strong enough to compare, agreed within max_ceiling_disagreement.
   double confidence = 0;           // In [0, 1]: the evidence for the recovered layout (frame_confidence.h); 0 without one.

@@ -22,17 +22,14 @@ def test_sequence_equals_the_tool_on_a_sequence(sequence_scene, tmp_path):
     camera = cd.Camera.from_file(str(sequence_scene / "camera.yaml"))
     seq = cd.Sequence()
     truth = truth_frames(sequence_scene)
-    tracked = 0
     for frame in truth:
         res = seq.process(cd.read_image(str(sequence_scene / "rgb" / frame["file"])), camera)
         assert res.ok, res.status
         assert abs(res.geometry.width - frame["width"]) < 0.05
-        tracked += res.junctions_tracked
         tool_mm = read_png16(tmp_path / "corridor" / "depth" / frame["file"]).astype(np.float64)
         have = np.isfinite(res.depth)
         np.testing.assert_array_equal(have, tool_mm > 0)
         assert np.abs(res.depth[have] * 1000.0 - tool_mm[have]).max() <= 1.0
-    assert tracked >= 1  # Later frames' junctions were found near the earlier ones'.
 
 
 def test_reset_starts_a_new_sequence(sequence_scene):

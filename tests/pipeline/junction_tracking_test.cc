@@ -1,8 +1,9 @@
 // Junction tracking in a sequence (RecoverDepthOptions::track_junctions): on a rendered drive the
 // frames whose junctions were tracked from the previous frame's are as close to the generator's
-// true width as the whole search's; a frame far from the previous one is searched whole; the
-// two-thread FramePipeline tracks too; a bad tracker option is named; a frame whose ceiling does
-// not confirm its walls does not let the next one be tracked.
+// true width as the whole search's; a tracked frame whose own whole search its ceiling confirms
+// keeps that search; a frame far from the previous one is searched whole; the two-thread
+// FramePipeline tracks too; a bad tracker option is named; a frame whose ceiling does not confirm
+// its walls does not let the next one be tracked.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -71,10 +72,13 @@ class JunctionTrackingTest : public ::testing::Test {
 Camera JunctionTrackingTest::camera_;
 std::vector<synth::Frame> JunctionTrackingTest::frames_;
 
+// Without a ceiling search nothing confirms a frame's own search, and the tracked lines stand.
 TEST_F(JunctionTrackingTest, TrackedFramesAreAsCloseToTheTrueWidth) {
+  RecoverDepthOptions no_ceiling;
+  no_ceiling.estimate_ceiling = false;
   std::vector<double> searched_errors, tracked_errors;
-  EXPECT_EQ(RunDrive(false, &searched_errors), 0);
-  const int tracked = RunDrive(true, &tracked_errors);
+  EXPECT_EQ(RunDrive(false, &searched_errors, no_ceiling), 0);
+  const int tracked = RunDrive(true, &tracked_errors, no_ceiling);
   // Frames 0 and 1 are searched whole (the second one's search agrees with its tracked pair);
   // frames 2 on may be tracked.
   EXPECT_GE(tracked, kFrames - 4);
@@ -83,6 +87,28 @@ TEST_F(JunctionTrackingTest, TrackedFramesAreAsCloseToTheTrueWidth) {
     EXPECT_LT(searched_errors[i], 0.02) << "frame " << i;
     EXPECT_LT(tracked_errors[i], 0.02) << "frame " << i;
   }
+}
+
+// With the ceiling searched, each tracked frame is searched whole too, and its own search, which
+// its ceiling confirms on this clean drive, is kept: the widths are the frames' own, and the track
+// goes on (the own search found the tracked pair).
+TEST_F(JunctionTrackingTest, AnOwnSearchTheCeilingConfirmsIsKept) {
+  std::vector<double> searched_errors, sequence_errors;
+  EXPECT_EQ(RunDrive(false, &searched_errors), 0);
+  EXPECT_EQ(RunDrive(true, &sequence_errors), 0);
+  for (int i = 0; i < kFrames; ++i) {
+    EXPECT_LT(sequence_errors[i], 0.02) << "frame " << i;
+    EXPECT_NEAR(sequence_errors[i], searched_errors[i], 1e-9) << "frame " << i;
+  }
+  std::unique_ptr<DepthRecoverer> recoverer;
+  ASSERT_TRUE(DepthRecoverer::Create(RecoverDepthOptions(), &recoverer).ok());
+  JunctionTrack track;
+  RecoverDepthResult result;
+  for (int i = 0; i < 3; ++i) {
+    ASSERT_TRUE(recoverer->Recover(frames_[i].bgr, camera_, &result, nullptr, &track).ok());
+  }
+  EXPECT_FALSE(result.junctions_tracked);
+  EXPECT_TRUE(track.Trusted(RecoverDepthOptions().tracker.redetect_interval));
 }
 
 // The track is trusted only after a searched frame whose two ceiling sides agree with its walls.
@@ -116,7 +142,8 @@ TEST_F(JunctionTrackingTest, ATrackedFrameItsCeilingDoesNotConfirmIsSearchedWhol
   for (int i = 0; i < 3; ++i) {
     ASSERT_TRUE(normal->Recover(frames_[i].bgr, camera_, &result, nullptr, &track).ok());
   }
-  ASSERT_TRUE(result.junctions_tracked) << "premise: the track is trusted by frame 2";
+  ASSERT_TRUE(track.Trusted(RecoverDepthOptions().tracker.redetect_interval))
+      << "premise: the track is trusted by frame 2";
   ASSERT_TRUE(blind->Recover(frames_[3].bgr, camera_, &result, nullptr, &track).ok());
   EXPECT_FALSE(result.junctions_tracked);
   EXPECT_LT(std::abs(result.geometry.width / frames_[3].truth.width - 1), 0.02);
@@ -152,7 +179,8 @@ TEST_F(JunctionTrackingTest, AFrameFarFromThePreviousOneIsSearchedWhole) {
   for (int i = 0; i < 3; ++i) {
     ASSERT_TRUE(recoverer->Recover(frames_[i].bgr, camera_, &result, nullptr, &track).ok());
   }
-  ASSERT_TRUE(result.junctions_tracked) << "premise: the track is trusted by frame 2";
+  ASSERT_TRUE(track.Trusted(RecoverDepthOptions().tracker.redetect_interval))
+      << "premise: the track is trusted by frame 2";
   // The camera turned and moved aside: the previous lines are far from this frame's.
   const synth::Frame moved = testing_util::RenderCorridorFrame(
       camera_, 2.2, 2.7, 11, synth::CameraPose{-0.08, 0.05, -0.35, 0.66, 4.0}, 0.0);
@@ -161,9 +189,12 @@ TEST_F(JunctionTrackingTest, AFrameFarFromThePreviousOneIsSearchedWhole) {
   EXPECT_LT(std::abs(result.geometry.width / moved.truth.width - 1), 0.02);
 }
 
+// Without a ceiling search (nothing confirms a frame's own search) the tracked lines stand.
 TEST_F(JunctionTrackingTest, TheTwoThreadPipelineTracks) {
+  RecoverDepthOptions no_ceiling;
+  no_ceiling.estimate_ceiling = false;
   std::unique_ptr<DepthRecoverer> recoverer;
-  ASSERT_TRUE(DepthRecoverer::Create(RecoverDepthOptions(), &recoverer).ok());
+  ASSERT_TRUE(DepthRecoverer::Create(no_ceiling, &recoverer).ok());
   FramePipeline pipeline(*recoverer, 2);
   int tracked = 0, delivered = 0;
   pipeline.Run(
