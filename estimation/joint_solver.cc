@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <vector>
 
 #include "estimation/bounded_lm.h"
 #include "estimation/closed_form.h"
@@ -24,6 +26,43 @@ struct JunctionResiduals {
     return JunctionLineResidual(intrinsics, p.x(), p.y(), i < left ? -1 : 1)(x, residual);
   }
 };
+
+// Each side's points within trim_sigmas robust standard deviations of the lines of x (at least
+// kMinTrimPx), into *kept (whose vectors keep their memory) and *mask (1 = kept, the left side's
+// points then the right's). False, keeping nothing, when a side would keep fewer than two points.
+bool TrimToFit(const CorridorObservation& all, const FloorIntrinsics& intrinsics, const double x[4],
+               double trim_sigmas, CorridorObservation* kept, std::vector<char>* mask) {
+  constexpr double kMinTrimPx = 1.0;
+  thread_local std::vector<double> thread_distance, thread_sorted;
+  std::vector<double>& distance = thread_distance;
+  std::vector<double>& sorted = thread_sorted;
+  mask->clear();
+  kept->left.clear();
+  kept->right.clear();
+  for (int side = -1; side <= 1; side += 2) {
+    const std::vector<Eigen::Vector2d>& points = side < 0 ? all.left : all.right;
+    distance.clear();
+    for (const auto& p : points) {
+      double r = 0;
+      if (!JunctionLineResidual(intrinsics, p.x(), p.y(), side)(x, &r) || !std::isfinite(r)) {
+        return false;
+      }
+      distance.push_back(std::abs(r));
+    }
+    sorted.assign(distance.begin(), distance.end());
+    const size_t mid = sorted.size() / 2;
+    std::nth_element(sorted.begin(), sorted.begin() + mid, sorted.end());
+    const double threshold = std::max(trim_sigmas * 1.4826 * sorted[mid], kMinTrimPx);
+    std::vector<Eigen::Vector2d>& out = side < 0 ? kept->left : kept->right;
+    for (size_t i = 0; i < points.size(); ++i) {
+      const bool keep = distance[i] <= threshold;
+      mask->push_back(keep ? 1 : 0);
+      if (keep) out.push_back(points[i]);
+    }
+    if (out.size() < 2) return false;
+  }
+  return true;
+}
 
 }  // namespace
 
@@ -55,12 +94,44 @@ Status JointSolver::Solve(const CorridorObservation& observation, const Corridor
   lm_options.parameter_tolerance = lm.parameter_tolerance;
   lm_options.gradient_tolerance = lm.gradient_tolerance;
   lm_options.loss = RobustLoss::FromName(options_.loss, options_.loss_scale);
-  const JunctionResiduals residuals{
-      observation, FloorIntrinsics{observation.fx, observation.fy, observation.cx,
-                                   observation.cy, observation.camera_height}};
-  const BoundedLmSummary lm_summary = SolveBoundedLm<4>(residuals, lm_options, lower, upper, x);
+  const FloorIntrinsics intrinsics{observation.fx, observation.fy, observation.cx, observation.cy,
+                                   observation.camera_height};
+  BoundedLmSummary lm_summary =
+      SolveBoundedLm<4>(JunctionResiduals{observation, intrinsics}, lm_options, lower, upper, x);
   summary->evaluations = lm_summary.residual_evaluations;
   summary->iterations = lm_summary.iterations;
+  // Trimming: refit on the points near the fit's lines, which are chosen again from all points at
+  // each new fit (a point dropped by a fit pulled off by others may come back), until they repeat.
+  // The thread's, reused from call to call.
+  thread_local CorridorObservation thread_kept;
+  thread_local std::vector<char> thread_mask, thread_previous;
+  CorridorObservation& kept = thread_kept;
+  std::vector<char>& mask = thread_mask;
+  std::vector<char>& previous = thread_previous;
+  previous.assign(observation.left.size() + observation.right.size(), 1);
+  constexpr int kMaxTrimRounds = 3;
+  for (int round = 0; options_.trim_sigmas > 0 && round < kMaxTrimRounds &&
+                      lm_summary.termination != BoundedLmSummary::Termination::kFailure;
+       ++round) {
+    if (!TrimToFit(observation, intrinsics, x, options_.trim_sigmas, &kept, &mask) ||
+        mask == previous) {
+      break;
+    }
+    previous.swap(mask);
+    kept.fx = observation.fx;
+    kept.fy = observation.fy;
+    kept.cx = observation.cx;
+    kept.cy = observation.cy;
+    kept.camera_height = observation.camera_height;
+    double refit[4] = {x[0], x[1], x[2], x[3]};
+    const BoundedLmSummary trimmed =
+        SolveBoundedLm<4>(JunctionResiduals{kept, intrinsics}, lm_options, lower, upper, refit);
+    summary->evaluations += trimmed.residual_evaluations;
+    summary->iterations += trimmed.iterations;
+    if (trimmed.termination == BoundedLmSummary::Termination::kFailure) break;
+    lm_summary = trimmed;
+    std::copy(refit, refit + 4, x);
+  }
   summary->final_cost = lm_summary.final_cost;
   summary->converged = lm_summary.termination == BoundedLmSummary::Termination::kConvergence;
   summary->seconds =

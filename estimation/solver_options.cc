@@ -115,6 +115,9 @@ bool SolverOptions::Check(std::string* why) const {
     return Fail(why, "unknown loss '" + loss + "'; valid: none, huber, cauchy");
   }
   if (!(loss_scale > 0 && std::isfinite(loss_scale))) return Fail(why, "loss_scale must be > 0");
+  if (!(trim_sigmas >= 0 && std::isfinite(trim_sigmas))) {
+    return Fail(why, "trim_sigmas must be >= 0 (0 = no trimming)");
+  }
   if (max_rounds <= 0 || max_rounds > 100) return Fail(why, "max_rounds must be in [1, 100]");
   if (!(round_tolerance > 0)) return Fail(why, "round_tolerance must be positive");
   if (!std::isfinite(initial_pitch) || std::abs(initial_pitch) >= M_PI / 2) {

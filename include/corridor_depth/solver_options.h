@@ -60,6 +60,12 @@ struct LmOptions {
 struct SolverOptions {
   std::string loss = "huber";     // Robust loss inside both functors: "none", "huber", "cauchy".
   double loss_scale = 2.0;        // Loss scale, pixels.
+  // "joint": after the fit, each side's points farther from their fitted line than trim_sigmas
+  // robust standard deviations (1.4826 times the median distance of that side's points, and at
+  // least 1 px) are dropped and the fit repeated from there, until the kept points stop changing;
+  // 0 = no trimming. The scale comes from the points' own spread, so that a second line's points
+  // mixed into a junction's are dropped where a fixed loss scale would still be pulled by them.
+  double trim_sigmas = 3.0;
   int max_rounds = 20;            // Alternation rounds of stage 1 then stage 2 (grid, lm).
   double round_tolerance = 1e-6;  // Stop alternating when no parameter moves more than this.
   double initial_pitch = 0.0;     // Pitch prior theta_0 when no initial estimate is given, rad.
