@@ -58,8 +58,8 @@ struct LmOptions {
 
 // Options shared by every solver.
 struct SolverOptions {
-  std::string loss = "huber";     // Robust loss inside both functors: "none", "huber", "cauchy".
-  double loss_scale = 2.0;        // Loss scale, pixels.
+  std::string loss = "huber";  // Robust loss inside both functors: "none", "huber", "cauchy".
+  double loss_scale = 2.0;     // Loss scale, pixels.
   // "joint": after the fit, each side's points farther from their fitted line than trim_sigmas
   // robust standard deviations (1.4826 times the median distance of that side's points, and at
   // least 1 px) are dropped and the fit repeated from there, until the kept points stop changing;
