@@ -52,16 +52,16 @@ Status DepthRecoverer::Recover(const cv::Mat& image, const Camera& camera,
                                RecoverDepthResult* result, const CorridorGeometry* previous,
                                JunctionTrack* track) const {
   const auto start = Clock::now();
-  const auto detect_and_reconstruct = [&](JunctionTrack* with) {
-    Detect(image, camera, result, with);
-    if (result->ReadyToReconstruct()) Reconstruct(camera, result, previous);
+  const auto detect_and_reconstruct = [&](RecoverDepthResult* into, JunctionTrack* with) {
+    Detect(image, camera, into, with);
+    if (into->ReadyToReconstruct()) Reconstruct(camera, into, previous);
   };
-  detect_and_reconstruct(track);
+  detect_and_reconstruct(result, track);
   if (track != nullptr && !TrackConfirmedBy(options_, *result)) {
     if (result->junctions_tracked) {
       // Tracked lines the frame's ceiling does not confirm: the frame is searched whole, and the
       // track goes on from that search, unconfirmed.
-      detect_and_reconstruct(nullptr);
+      detect_and_reconstruct(result, nullptr);
       track->Searched(result->junctions, image.size(), false);
     } else {
       track->Unconfirmed();
@@ -71,8 +71,7 @@ Status DepthRecoverer::Recover(const cv::Mat& image, const Camera& camera,
     // Tracked lines the ceiling confirms: the frame's own whole search, when it is confirmed
     // too, is kept instead (OwnSearchKept), and the track goes on from it.
     RecoverDepthResult own;
-    Detect(image, camera, &own, nullptr);
-    if (own.ReadyToReconstruct()) Reconstruct(camera, &own, previous);
+    detect_and_reconstruct(&own, nullptr);
     if (OwnSearchKept(options_, own)) {
       const bool agrees =
           SameJunctions(result->junctions, own.junctions, options_.tracker.agreement_px);

@@ -46,9 +46,10 @@ std::string Percent(double fraction) {
 // What the frame's confidence rests on, as scores.csv columns.
 std::string EvidenceColumns(const FrameEvidence& e) {
   char text[200];
-  std::snprintf(text, sizeof(text), "%.3f,%.3f,%.3f,%d,%d,%d,%d", e.junction[0], e.junction[1],
-                e.ceiling_disagreement, e.crossings[0].crossing, e.crossings[0].reaching,
-                e.crossings[1].crossing, e.crossings[1].reaching);
+  std::snprintf(text, sizeof(text), "%.3f,%.3f,%.3f,%d,%d,%d,%d,%.3f", e.junction[0],
+                e.junction[1], e.ceiling_disagreement, e.crossings[0].crossing,
+                e.crossings[0].reaching, e.crossings[1].crossing, e.crossings[1].reaching,
+                e.ceiling_split);
   return text;
 }
 
@@ -101,7 +102,7 @@ int Main(int argc, char** argv) {
   std::string csv =
       "file,kind,quality,status,note,confidence,verdict,left_error,right_error,left_junction,"
       "right_junction,ceiling_disagreement,left_crossing,left_reaching,right_crossing,"
-      "right_reaching\n";
+      "right_reaching,ceiling_split\n";
   std::map<std::string, Tally> tallies;  // By group: "corridor, sure", "corridor, approx", ...
   std::vector<cv::Mat> tiles;
   std::ostringstream table;
