@@ -33,6 +33,17 @@ class JunctionTrackingTest : public ::testing::Test {
     }
   }
 
+  // Frames 0-2 through `recoverer` with `track`; the premise of the tests that start from a
+  // trusted track.
+  static void TrustTrack(const DepthRecoverer& recoverer, JunctionTrack* track,
+                         RecoverDepthResult* result) {
+    for (int i = 0; i < 3; ++i) {
+      ASSERT_TRUE(recoverer.Recover(frames_[i].bgr, camera_, result, nullptr, track).ok());
+    }
+    ASSERT_TRUE(track->Trusted(RecoverDepthOptions().tracker.redetect_interval))
+        << "premise: the track is trusted by frame 2";
+  }
+
   // The drive's frames in order, for a FramePipeline.
   FramePipeline::Source DriveSource() const {
     return [next = 0](PipelineFrame* frame) mutable {
@@ -139,11 +150,7 @@ TEST_F(JunctionTrackingTest, ATrackedFrameItsCeilingDoesNotConfirmIsSearchedWhol
   ASSERT_TRUE(DepthRecoverer::Create(below, &blind).ok());
   JunctionTrack track;
   RecoverDepthResult result;
-  for (int i = 0; i < 3; ++i) {
-    ASSERT_TRUE(normal->Recover(frames_[i].bgr, camera_, &result, nullptr, &track).ok());
-  }
-  ASSERT_TRUE(track.Trusted(RecoverDepthOptions().tracker.redetect_interval))
-      << "premise: the track is trusted by frame 2";
+  ASSERT_NO_FATAL_FAILURE(TrustTrack(*normal, &track, &result));
   ASSERT_TRUE(blind->Recover(frames_[3].bgr, camera_, &result, nullptr, &track).ok());
   EXPECT_FALSE(result.junctions_tracked);
   EXPECT_LT(std::abs(result.geometry.width / frames_[3].truth.width - 1), 0.02);
@@ -176,11 +183,7 @@ TEST_F(JunctionTrackingTest, AFrameFarFromThePreviousOneIsSearchedWhole) {
   ASSERT_TRUE(DepthRecoverer::Create(RecoverDepthOptions(), &recoverer).ok());
   JunctionTrack track;
   RecoverDepthResult result;
-  for (int i = 0; i < 3; ++i) {
-    ASSERT_TRUE(recoverer->Recover(frames_[i].bgr, camera_, &result, nullptr, &track).ok());
-  }
-  ASSERT_TRUE(track.Trusted(RecoverDepthOptions().tracker.redetect_interval))
-      << "premise: the track is trusted by frame 2";
+  ASSERT_NO_FATAL_FAILURE(TrustTrack(*recoverer, &track, &result));
   // The camera turned and moved aside: the previous lines are far from this frame's.
   const synth::Frame moved = testing_util::RenderCorridorFrame(
       camera_, 2.2, 2.7, 11, synth::CameraPose{-0.08, 0.05, -0.35, 0.66, 4.0}, 0.0);
