@@ -42,16 +42,16 @@ BandEdges MeasureBandEdges(const cv::Mat& edges, const cv::Mat& dx, const cv::Ma
     const long across_before = out.across;
     ForEachNonZeroByte(edges.ptr<uchar>(j), begin, end, [&](int i) {
       const double ax = std::abs(gx[i]), ay = std::abs(gy[i]);
+      // An edge toward the vanishing point runs along the corridor, whatever its slope: near
+      // the image's side the junctions, runner edges and grout lines stand almost vertical.
+      if (toward_vp(gx[i], gy[i], ax, ay, i, v)) return;
       if (ay <= tan_tolerance * ax) {  // Gradient horizontal: the edge stands vertical.
         ++out.vertical;
-        return;
+      } else if (ax > tan_tolerance * ay) {  // Neither across nor vertical.
+        ++out.oblique;
+      } else {
+        ++out.across;
       }
-      const bool along = toward_vp(gx[i], gy[i], ax, ay, i, v);
-      if (ax > tan_tolerance * ay) {  // Neither across nor vertical.
-        if (!along) ++out.oblique;
-        return;
-      }
-      if (!along) ++out.across;
     });
     if (out.across > across_before) ++out.across_rows;
   }

@@ -107,6 +107,27 @@ TEST_F(BandTest, AnEdgeTowardTheVanishingPointIsNotAcross) {
   EXPECT_EQ(band.vertical, 0);
 }
 
+TEST_F(BandTest, ASteepEdgeTowardTheVanishingPointIsNotVertical) {
+  // A steep band (a narrow view, a pitched camera): the inner line runs 4.5 degrees from
+  // vertical to (120, 400), the outer one 13.3 degrees to (60, 400). At row 300 the band spans
+  // u in (83.7, 127.9).
+  EdgeMaps steep(cv::Size(300, 420));
+  const Eigen::Vector3d steep_inner = DownLine(vp, {120, 400});
+  const Eigen::Vector3d steep_outer = DownLine(vp, {60, 400});
+  // (105, 300): the vanishing point lies along (45, -280), 9.1 degrees from vertical; an edge
+  // along it (gradient (280, 45), 9.1 degrees from horizontal) runs along the corridor, though
+  // within 15 degrees of vertical.
+  steep.Put(105, 300, 280, 45);
+  // (100, 310): an edge 5 degrees from vertical leaning the other way (gradient (cos 5, -sin 5)),
+  // 14.8 degrees from the direction (50, -290) to the vanishing point: a door frame's.
+  steep.Put(100, 310, 200 * std::cos(5 * M_PI / 180), -200 * std::sin(5 * M_PI / 180));
+  const BandEdges band = MeasureBandEdges(steep.edges, steep.dx, steep.dy, GradientGrid(),
+                                          steep_inner, steep_outer, vp, BandEdgeOptions());
+  EXPECT_EQ(band.vertical, 1);
+  EXPECT_EQ(band.across, 0);
+  EXPECT_EQ(band.oblique, 0);
+}
+
 // Grey-blue above the line v = 0.5 u + 40, brown below it, and the line.
 struct TwoColours {
   const cv::Vec3b above{180, 150, 140}, below{40, 90, 150};
