@@ -285,6 +285,18 @@ TEST(FloorRuleTest, TakesTheJunctionsBeyondARunnerOnCarpet) {
   ExpectTheRuleTakesTheJunctions("mix", {{6, 7}, {7, 14}}, without, 50.0, 10.0);
 }
 
+// A yellow runner with a purple border and tiled margins, seen from a head-mounted camera pitched
+// 12-23 degrees down (scene 9 of the class with every part): near the image's side the margins'
+// lines along the corridor stand within 15 degrees of vertical. Only when those are left out as
+// lines toward the vanishing point do the margins' joints say floor, and the floor rule takes
+// the junctions beyond the runner's edges.
+TEST(FloorRuleTest, TakesTheJunctionsBeyondARunnerSeenSteeply) {
+  JunctionDetectorOptions without;
+  without.floor_band_min_across = 0;
+  without.floor_band_texture_density = 0;
+  ExpectTheRuleTakesTheJunctions("mix", {{9, 0}, {9, 1}}, without, 20.0, 3.0);
+}
+
 TEST(FloorRuleTest, BadOptionIsRejected) {
   JunctionDetectorOptions options;
   options.floor_band_min_across = -1;
