@@ -46,7 +46,7 @@ bool MedianLateralPosition(const FloorIntrinsics& k, const CorridorRotation<doub
   *median_x = weighted.back().first;
   for (const auto& [value, weight] : weighted) {
     below += weight;
-    if (below >= 0.5 * total) {
+    if (below > 0.5 * total) {
       *median_x = value;
       break;
     }
