@@ -19,6 +19,8 @@ bool JunctionEdgePointOptions::Check(std::string* why) const {
     reason = "max_distance_px must be positive";
   } else if (!(threshold >= 0 && std::isfinite(threshold))) {
     reason = "threshold must be >= 0";
+  } else if (!(weight_power >= 0 && weight_power <= 4)) {
+    reason = "weight_power must be in [0, 4]";
   } else if (!(max_weight >= 1 && std::isfinite(max_weight))) {
     reason = "max_weight must be >= 1";
   }
@@ -77,8 +79,7 @@ void MeasureJunctionEdgePoints(const cv::Mat& bgr, const JunctionEdgePointOption
   const double median = std::max(sorted[sorted.size() / 2], 1e-9);
   double sum = 0;
   for (double& w : weights) {
-    const double ratio = w / median;
-    w = std::min(ratio * ratio, options.max_weight);
+    w = std::min(std::pow(w / median, options.weight_power), options.max_weight);
     sum += w;
   }
   const double scale = static_cast<double>(weights.size()) / sum;

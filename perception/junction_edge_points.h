@@ -12,6 +12,7 @@ struct JunctionEdgePointOptions {
   double reach_px = 3;         // Edge peaks are sought this far from the fitted line along each row (column), px, either side.
   double max_distance_px = 2;  // Peaks farther than this from the fitted line (perpendicular) are dropped, px.
   double threshold = 40;       // Least colour gradient across the line (Sobel 3x3, the strongest channel) of a peak.
+  double weight_power = 2;     // A point's weight is (strength / median strength)^weight_power: 2 = inverse variance, 0 = all alike.
   double max_weight = 4;       // A point's weight is at most this many times the median point's.
 
   bool Check(std::string* why) const;
@@ -24,7 +25,7 @@ struct JunctionEdgePointOptions {
 // the row (EdgePeaksAlong): the integer Canny pixels, biased by up to half a pixel and on both
 // sides of a blurred edge, become one point per row where the edge is. A point's weight is the
 // inverse of its position's expected variance, which falls with the square of the gradient across
-// the edge: (strength / median strength)^2, at most max_weight, so that a few very strong pixels
+// the edge: (strength / median strength)^weight_power (2), at most max_weight, so that a few very strong pixels
 // (another line's crossing) cannot outweigh the junction. Weights are scaled to a mean of 1.
 // Both vectors are emptied when fewer than two points are found.
 void MeasureJunctionEdgePoints(const cv::Mat& bgr, const JunctionEdgePointOptions& options,
