@@ -9,9 +9,9 @@
 namespace corridor {
 
 struct JunctionEdgePointOptions {
-  double reach_px = 3;         // Edge peaks are sought this far from the fitted line along each row (column), px, either side.
-  double max_distance_px = 2;  // Peaks farther than this from the fitted line (perpendicular) are dropped, px.
-  double threshold = 40;       // Least colour gradient across the line (Sobel 3x3, the strongest channel) of a peak.
+  double reach_px = 2;         // Edge peaks are sought this far from the fitted line along each row (column), px, either side.
+  double max_distance_px = 1;  // Peaks farther than this from the fitted line (perpendicular) are dropped, px: a baseboard's top a few pixels above the junction is not taken for it.
+  double threshold = 15;       // Least colour gradient across the line (Sobel 3x3, the strongest channel) of a peak: low, so that a faint junction under a strong edge (a floor meeting a dark baseboard) keeps its own peak, the nearest.
   double weight_power = 2;     // A point's weight is (strength / median strength)^weight_power: 2 = inverse variance, 0 = all alike.
   double max_weight = 4;       // A point's weight is at most this many times the median point's.
 
