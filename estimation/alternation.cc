@@ -41,7 +41,8 @@ Status RunAlternation(const CorridorObservation& observation, const CorridorGeom
   for (int round = 0; round < options.max_rounds; ++round) {
     const double before[4] = {yaw, offset, pitch, width};
     double x1[2] = {yaw, offset};
-    const SymmetryResidual symmetry(k, pitch, observation.left, observation.right, loss);
+    const SymmetryResidual symmetry(k, pitch, observation.left, observation.right, loss,
+                                    observation.left_weights, observation.right_weights);
     if (!minimizer.MinimizeSymmetry(symmetry, x1, &summary->final_cost, &summary->evaluations)) {
       return Status::ImplausibleGeometry(
           "symmetry stage found no yaw/offset for which the junction points lie on the floor");
@@ -49,7 +50,8 @@ Status RunAlternation(const CorridorObservation& observation, const CorridorGeom
     yaw = x1[0];
     offset = x1[1];
     double x2[2] = {pitch, width};
-    const WidthResidual distance(k, yaw, offset, observation.left, observation.right, loss);
+    const WidthResidual distance(k, yaw, offset, observation.left, observation.right, loss,
+                                 observation.left_weights, observation.right_weights);
     if (!minimizer.MinimizeWidth(distance, x2, &summary->final_cost, &summary->evaluations)) {
       return Status::ImplausibleGeometry(
           "width stage found no pitch/width for which the junction points lie on the floor");

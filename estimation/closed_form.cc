@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include <Eigen/Eigenvalues>
 
@@ -12,12 +14,14 @@
 namespace corridor {
 namespace {
 
-// Median lateral position X_W of the points' floor intersections, or false if any misses the
-// floor.
+// Median lateral position X_W of the points' floor intersections (weighted: the position where
+// half the weight lies on either side; `weights` empty = all 1), or false if any misses the floor.
 bool MedianLateralPosition(const FloorIntrinsics& k, const CorridorRotation<double>& rotation,
-                           const std::vector<Eigen::Vector2d>& points, double* median_x) {
+                           const std::vector<Eigen::Vector2d>& points,
+                           const std::vector<double>& weights, double* median_x) {
   // The thread's, reused from call to call.
   thread_local std::vector<double> thread_x;
+  thread_local std::vector<std::pair<double, double>> thread_weighted;
   std::vector<double>& x = thread_x;
   x.clear();
   for (const auto& p : points) {
@@ -25,33 +29,70 @@ bool MedianLateralPosition(const FloorIntrinsics& k, const CorridorRotation<doub
     if (!BackProjectToFloor(k, rotation, p.x(), p.y(), &floor_point)) return false;
     x.push_back(floor_point.x);
   }
-  std::nth_element(x.begin(), x.begin() + x.size() / 2, x.end());
-  *median_x = x[x.size() / 2];
+  if (weights.empty()) {
+    std::nth_element(x.begin(), x.begin() + x.size() / 2, x.end());
+    *median_x = x[x.size() / 2];
+    return true;
+  }
+  std::vector<std::pair<double, double>>& weighted = thread_weighted;
+  weighted.clear();
+  double total = 0;
+  for (size_t i = 0; i < x.size(); ++i) {
+    weighted.emplace_back(x[i], weights[i]);
+    total += weights[i];
+  }
+  std::sort(weighted.begin(), weighted.end());
+  double below = 0;
+  *median_x = weighted.back().first;
+  for (const auto& [value, weight] : weighted) {
+    below += weight;
+    if (below > 0.5 * total) {
+      *median_x = value;
+      break;
+    }
+  }
   return true;
 }
 
 // The points that lie on their side's dominant line (LineInlierMask), so that gross outliers
-// neither tilt the fitted line nor shift the lateral positions.
-// Into *inliers, which keeps its memory.
-void Inliers(const std::vector<Eigen::Vector2d>& points, std::vector<Eigen::Vector2d>* inliers) {
+// neither tilt the fitted line nor shift the lateral positions, with their weights (none when
+// `weights` is empty). Into *inliers and *inlier_weights, which keep their memory.
+void Inliers(const std::vector<Eigen::Vector2d>& points, const std::vector<double>& weights,
+             std::vector<Eigen::Vector2d>* inliers, std::vector<double>* inlier_weights) {
   thread_local std::vector<char> thread_keep;
   std::vector<char>& keep = thread_keep;
   LineInlierMask(points, &keep);
   inliers->clear();
+  inlier_weights->clear();
   for (size_t i = 0; i < points.size(); ++i) {
-    if (keep[i]) inliers->push_back(points[i]);
+    if (!keep[i]) continue;
+    inliers->push_back(points[i]);
+    if (!weights.empty()) inlier_weights->push_back(weights[i]);
   }
 }
 
 }  // namespace
 
 bool FitImageLine(const std::vector<Eigen::Vector2d>& points, Eigen::Vector3d* line) {
-  if (points.size() < 2) return false;
+  return FitImageLine(points, {}, line);
+}
+
+bool FitImageLine(const std::vector<Eigen::Vector2d>& points, const std::vector<double>& weights,
+                  Eigen::Vector3d* line) {
+  if (points.size() < 2 || !(weights.empty() || weights.size() == points.size())) return false;
+  const auto weight = [&](size_t i) { return weights.empty() ? 1.0 : weights[i]; };
   Eigen::Vector2d mean = Eigen::Vector2d::Zero();
-  for (const auto& p : points) mean += p;
-  mean /= static_cast<double>(points.size());
+  double total = 0;
+  for (size_t i = 0; i < points.size(); ++i) {
+    mean += weight(i) * points[i];
+    total += weight(i);
+  }
+  if (!(total > 0)) return false;
+  mean /= total;
   Eigen::Matrix2d scatter = Eigen::Matrix2d::Zero();
-  for (const auto& p : points) scatter += (p - mean) * (p - mean).transpose();
+  for (size_t i = 0; i < points.size(); ++i) {
+    scatter += weight(i) * (points[i] - mean) * (points[i] - mean).transpose();
+  }
   if (scatter.trace() <= 1e-12) return false;
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(scatter);
   const Eigen::Vector2d normal = eig.eigenvectors().col(0);  // Smallest eigenvalue.
@@ -64,12 +105,16 @@ Status SolveClosedForm(const CorridorObservation& observation, CorridorGeometry*
   if (!observation.Check(&why)) return Status::InvalidArgument(why);
   // The thread's, reused from call to call.
   thread_local std::vector<Eigen::Vector2d> thread_left, thread_right;
+  thread_local std::vector<double> thread_left_weights, thread_right_weights;
   std::vector<Eigen::Vector2d>& left = thread_left;
   std::vector<Eigen::Vector2d>& right = thread_right;
-  Inliers(observation.left, &left);
-  Inliers(observation.right, &right);
+  std::vector<double>& left_weights = thread_left_weights;
+  std::vector<double>& right_weights = thread_right_weights;
+  Inliers(observation.left, observation.left_weights, &left, &left_weights);
+  Inliers(observation.right, observation.right_weights, &right, &right_weights);
   Eigen::Vector3d left_line, right_line;
-  if (!FitImageLine(left, &left_line) || !FitImageLine(right, &right_line)) {
+  if (!FitImageLine(left, left_weights, &left_line) ||
+      !FitImageLine(right, right_weights, &right_line)) {
     return Status::ImplausibleGeometry("a junction's points are all the same point");
   }
   const Eigen::Vector3d vp = left_line.cross(right_line);
@@ -94,8 +139,8 @@ Status SolveClosedForm(const CorridorObservation& observation, CorridorGeometry*
                           observation.camera_height};
   const CorridorRotation<double> rotation(pitch, yaw);
   double left_x = 0, right_x = 0;
-  if (!MedianLateralPosition(k, rotation, left, &left_x) ||
-      !MedianLateralPosition(k, rotation, right, &right_x)) {
+  if (!MedianLateralPosition(k, rotation, left, left_weights, &left_x) ||
+      !MedianLateralPosition(k, rotation, right, right_weights, &right_x)) {
     return Status::ImplausibleGeometry(
         "junction points lie above the horizon of the vanishing point (not on the floor)");
   }

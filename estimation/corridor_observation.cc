@@ -12,6 +12,18 @@ bool AllFinite(const std::vector<Eigen::Vector2d>& points) {
   return true;
 }
 
+// Empty, or one finite weight >= 0 per point with at least two positive.
+bool WeightsValid(const std::vector<double>& weights, size_t points) {
+  if (weights.empty()) return true;
+  if (weights.size() != points) return false;
+  int positive = 0;
+  for (const double w : weights) {
+    if (!(w >= 0 && std::isfinite(w))) return false;
+    positive += w > 0 ? 1 : 0;
+  }
+  return positive >= 2;
+}
+
 }  // namespace
 
 CorridorObservation CorridorObservation::FromCamera(const Camera& camera) {
@@ -36,6 +48,10 @@ bool CorridorObservation::Check(std::string* why) const {
              ", right " + std::to_string(right.size()) + ")";
   } else if (!AllFinite(left) || !AllFinite(right)) {
     reason = "junction points must be finite";
+  } else if (!WeightsValid(left_weights, left.size()) ||
+             !WeightsValid(right_weights, right.size())) {
+    reason = "junction weights must be empty or one per point, finite and >= 0, with at least 2 "
+             "positive a side";
   }
   if (reason.empty()) return true;
   if (why != nullptr) *why = reason;

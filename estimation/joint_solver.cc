@@ -12,7 +12,9 @@
 namespace corridor {
 namespace {
 
-// The JunctionLineResidual of every edge point: the left junction's points, then the right's.
+// The JunctionLineResidual of every edge point, times the square root of its weight (the
+// maximum-likelihood fit for points of variance 1 / weight): the left junction's points, then the
+// right's.
 struct JunctionResiduals {
   const CorridorObservation& observation;
   const FloorIntrinsics intrinsics;
@@ -22,14 +24,22 @@ struct JunctionResiduals {
   template <typename T>
   bool operator()(int i, const T* x, T* residual) const {
     const int left = static_cast<int>(observation.left.size());
-    const auto& p = i < left ? observation.left[i] : observation.right[i - left];
-    return JunctionLineResidual(intrinsics, p.x(), p.y(), i < left ? -1 : 1)(x, residual);
+    const int side = i < left ? -1 : 1;
+    const size_t k = static_cast<size_t>(i < left ? i : i - left);
+    const auto& p = side < 0 ? observation.left[k] : observation.right[k];
+    if (!JunctionLineResidual(intrinsics, p.x(), p.y(), side)(x, residual)) return false;
+    const std::vector<double>& weights =
+        side < 0 ? observation.left_weights : observation.right_weights;
+    if (!weights.empty()) *residual *= std::sqrt(weights[k]);
+    return true;
   }
 };
 
 // Each side's points within trim_sigmas robust standard deviations of the lines of x (at least
-// kMinTrimPx), into *kept (whose vectors keep their memory) and *mask (1 = kept, the left side's
-// points then the right's). False, keeping nothing, when a side would keep fewer than two points.
+// kMinTrimPx), into *kept (whose vectors keep their memory) with their weights and *mask (1 =
+// kept, the left side's points then the right's). Distances are weighted (sqrt(w) |r|, in units
+// of one point of average noise). False, keeping nothing, when a side would keep fewer than two
+// points.
 bool TrimToFit(const CorridorObservation& all, const FloorIntrinsics& intrinsics, const double x[4],
                double trim_sigmas, CorridorObservation* kept, std::vector<char>* mask) {
   constexpr double kMinTrimPx = 1.0;
@@ -39,6 +49,8 @@ bool TrimToFit(const CorridorObservation& all, const FloorIntrinsics& intrinsics
   mask->clear();
   kept->left.clear();
   kept->right.clear();
+  kept->left_weights.clear();
+  kept->right_weights.clear();
   for (int side = -1; side <= 1; side += 2) {
     const std::vector<Eigen::Vector2d>& points = side < 0 ? all.left : all.right;
     distance.clear();
@@ -47,19 +59,25 @@ bool TrimToFit(const CorridorObservation& all, const FloorIntrinsics& intrinsics
       if (!JunctionLineResidual(intrinsics, p.x(), p.y(), side)(x, &r) || !std::isfinite(r)) {
         return false;
       }
-      distance.push_back(std::abs(r));
+      distance.push_back(std::abs(r) * std::sqrt(all.Weight(side, distance.size())));
     }
     sorted.assign(distance.begin(), distance.end());
     const size_t mid = sorted.size() / 2;
     std::nth_element(sorted.begin(), sorted.begin() + mid, sorted.end());
     const double threshold = std::max(trim_sigmas * 1.4826 * sorted[mid], kMinTrimPx);
     std::vector<Eigen::Vector2d>& out = side < 0 ? kept->left : kept->right;
+    std::vector<double>& out_weights = side < 0 ? kept->left_weights : kept->right_weights;
+    const bool weighted = !(side < 0 ? all.left_weights : all.right_weights).empty();
+    int positive = 0;
     for (size_t i = 0; i < points.size(); ++i) {
       const bool keep = distance[i] <= threshold;
       mask->push_back(keep ? 1 : 0);
-      if (keep) out.push_back(points[i]);
+      if (!keep) continue;
+      out.push_back(points[i]);
+      if (weighted) out_weights.push_back(all.Weight(side, i));
+      positive += all.Weight(side, i) > 0 ? 1 : 0;
     }
-    if (out.size() < 2) return false;
+    if (positive < 2) return false;
   }
   return true;
 }

@@ -7,7 +7,7 @@ namespace corridor {
 
 // How well a geometry explains the junction points it was fitted to: the RMS perpendicular pixel
 // distance of the observation's points to the two junction lines the geometry projects
-// (JunctionLineResidual). False when a line is undefined for the geometry or a distance is not
+// (JunctionLineResidual), weighted by the points' weights. False when a line is undefined for the geometry or a distance is not
 // finite; *rms is then meaningless.
 bool JunctionLineRms(const CorridorGeometry& geometry, const CorridorObservation& observation,
                      double* rms);

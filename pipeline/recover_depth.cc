@@ -11,6 +11,7 @@
 #include "pipeline/one_junction.h"
 #include "pipeline/plausibility.h"
 #include "pipeline/sequence_holds.h"
+#include "pipeline/solver_evidence.h"
 #include "pipeline/wall_checks.h"
 #include "perception/end_wall_detector.h"
 #include "perception/junction_detector.h"
@@ -176,11 +177,14 @@ Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* res
     status = CheckPlausible(geometry, options_);
     if (!status.ok()) return finish(status);
   } else {
+    // The junctions' edge points, when the solvers are to see them (here and in the checks).
+    if (result->handover != nullptr) {
+      MeasureSolverEvidence(result->handover->image, options_, &result->junctions);
+    }
     // The thread's observation, whose point vectors keep their memory from frame to frame.
     thread_local CorridorObservation thread_observation;
     const CorridorObservation& observation = thread_observation;
-    ObservationFromJunctions(result->junctions, camera, options_.points_per_line,
-                             &thread_observation);
+    ObservationFromJunctions(result->junctions, camera, options_, &thread_observation);
     status = solver_->Solve(observation, nullptr, &result->solver_summary);
     result->times.solve = SecondsSince(stage);
     if (!status.ok()) {

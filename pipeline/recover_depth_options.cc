@@ -9,6 +9,8 @@ bool RecoverDepthOptions::Check(std::string* why) const {
   std::string reason;
   if (points_per_line < 3 || points_per_line > 10000) {
     reason = "points_per_line must be in [3, 10000]";
+  } else if (solver_evidence != "lines" && solver_evidence != "edges") {
+    reason = "solver_evidence must be lines or edges, not '" + solver_evidence + "'";
   } else if (!(min_width > 0 && min_width < max_width && std::isfinite(max_width))) {
     reason = "width bounds must satisfy 0 < min_width < max_width";
   } else if (!(max_abs_yaw > 0 && max_abs_yaw < M_PI / 2)) {

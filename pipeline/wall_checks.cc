@@ -9,6 +9,7 @@
 #include "pipeline/ceiling_agreement.h"
 #include "pipeline/inner_line_check.h"
 #include "pipeline/plausibility.h"
+#include "pipeline/solver_evidence.h"
 
 namespace corridor {
 
@@ -49,7 +50,7 @@ bool CheckBaseboards(const WallCheckInputs& in, CorridorGeometry* geometry,
     JunctionPair pair = result->junctions;
     (side == 0 ? pair.left : pair.right) = side == 0 ? pair.left_lower : pair.right_lower;
     const CorridorObservation observation =
-        ObservationFromJunctions(pair, in.camera, options.points_per_line);
+        ObservationFromJunctions(pair, in.camera, options);
     SolverSummary summary;
     if (!in.solver.Solve(observation, nullptr, &summary).ok()) continue;
     CorridorGeometry g = summary.estimate;

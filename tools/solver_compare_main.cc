@@ -13,6 +13,7 @@
 
 #include "corridor_depth/image_io.h"
 #include "pipeline/plausibility.h"
+#include "pipeline/solver_evidence.h"
 #include "corridor_depth/recover_depth.h"
 #include "tools/compare/compare_report.h"
 #include "tools/compare/synthetic_junctions.h"
@@ -127,8 +128,10 @@ Status RunDataset(const std::vector<std::string>& names,
       RecoverDepthResult detection;
       Status frame_status = ReadColorImage(frame.rgb_path, &image);
       if (frame_status.ok()) frame_status = detector->Detect(image, scene.camera, &detection);
+      // With --solver_evidence=edges, the junctions' edge points measured on the frame.
+      if (frame_status.ok()) MeasureSolverEvidence(image, options, &detection.junctions);
       const CorridorObservation obs =
-          ObservationFromJunctions(detection.junctions, scene.camera, options.points_per_line);
+          ObservationFromJunctions(detection.junctions, scene.camera, options);
       for (size_t s = 0; s < solvers.size(); ++s) {
         SolverSummary summary;
         const Status solve = frame_status.ok() ? solvers[s]->Solve(obs, nullptr, &summary)

@@ -63,6 +63,10 @@ DEFINE_int32(redetect_interval, 10,
              "With --track_junctions, search the whole region again after this many tracked "
              "frames in a row (0 = never once trusted)");
 DEFINE_int32(points_per_line, 30, "Points sampled along each junction line for the solver");
+DEFINE_string(solver_evidence, corridor::RecoverDepthOptions().solver_evidence,
+              "What the solvers fit: lines (points_per_line points on each fitted junction line) "
+              "or edges (each junction's measured sub-pixel edge points, weighted by the gradient "
+              "across the edge)");
 DEFINE_double(roi_top, 0.5, "Junction search region starts at this fraction of the image height");
 DEFINE_double(hough_angle_window, 15.0,
               "Junction search: each edge pixel votes only for lines within this many degrees of "
@@ -118,6 +122,7 @@ Status RecoverDepthOptionsFromFlags(RecoverDepthOptions* options) {
   options->max_ceiling_disagreement = FLAGS_max_ceiling_disagreement;
   options->max_ceiling_change = FLAGS_max_ceiling_change;
   options->points_per_line = FLAGS_points_per_line;
+  options->solver_evidence = FLAGS_solver_evidence;
   options->search_max_width = FLAGS_search_max_width;
   options->perception.max_work_width = FLAGS_junction_max_width;
   options->perception.baseboard_band_contrast = FLAGS_baseboard_band_contrast;

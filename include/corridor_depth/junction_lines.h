@@ -17,6 +17,8 @@ struct JunctionLine {
   std::vector<Eigen::Vector2d> support;                // Edge pixels that support the line.
   double support_length = 0.0;                         // Pixels of the line covered by support.
   double confidence = 0.0;                             // In [0, 1]: how sure the detector is.
+  std::vector<Eigen::Vector2d> edge_points;            // Sub-pixel edge points measured on the image (raw pixels), when the solvers are to see them (RecoverDepthOptions::solver_evidence); else empty.
+  std::vector<double> edge_weights;                    // One weight per edge point (mean 1).
 };
 
 // Both junctions, or the reason they were not found.

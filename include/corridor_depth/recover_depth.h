@@ -29,6 +29,7 @@ struct RecoverDepthOptions {
   SolverOptions solver_options;                // Options of every solver.
   RasterizerOptions rasterizer_options;        // Options of every rasteriser.
   int points_per_line = 30;                    // N: points sampled along each junction (paper III-B).
+  std::string solver_evidence = "lines";       // What the solvers fit: "lines", points_per_line points on each fitted junction line; "edges", each junction's measured sub-pixel edge points with weights (a side with fewer than points_per_line of them falls back to its line's points).
   double min_width = 0.5;                      // Narrower estimates are implausible, m.
   double max_width = 20.0;                     // Wider estimates are implausible, m.
   double max_abs_yaw = 1.2;                    // |yaw| above this is implausible, rad (~69 deg).

@@ -6,7 +6,8 @@
 // horizontal pixel distance to the mapped right line at the same virtual row (and vice versa).
 // The opposite line is fitted to that side's inliers only (see LineInlierMask), so that gross
 // outliers from door frames or grout lines do not drag it; their own residuals remain for a
-// robust loss to down-weight.
+// robust loss to down-weight. With point weights (CorridorObservation), each residual is scaled by
+// the square root of its point's weight before the loss, and the opposite lines are weighted fits.
 
 #include <algorithm>
 #include <cmath>
@@ -27,14 +28,19 @@ class SymmetryResidual {
 
   SymmetryResidual(const FloorIntrinsics& intrinsics, double pitch,
                    std::vector<Eigen::Vector2d> left, std::vector<Eigen::Vector2d> right,
-                   ResidualLoss loss = ResidualLoss())
+                   ResidualLoss loss = ResidualLoss(), std::vector<double> left_weights = {},
+                   std::vector<double> right_weights = {})
       : intrinsics_(intrinsics),
         loss_(loss),
         pitch_(pitch),
         left_(std::move(left)),
         right_(std::move(right)),
         left_inliers_(LineInlierMask(left_)),
-        right_inliers_(LineInlierMask(right_)) {}
+        right_inliers_(LineInlierMask(right_)),
+        left_weights_(std::move(left_weights)),
+        right_weights_(std::move(right_weights)),
+        left_scale_(SquareRoots(left_weights_)),
+        right_scale_(SquareRoots(right_weights_)) {}
 
   int NumResiduals() const { return static_cast<int>(left_.size() + right_.size()); }
 
@@ -46,15 +52,19 @@ class SymmetryResidual {
     if (!MapAll(rotation, pitch, x[1], left_, &ul, &vl)) return false;
     if (!MapAll(rotation, pitch, x[1], right_, &ur, &vr)) return false;
     T a_left, b_left, a_right, b_right;  // u = a v + b in the virtual image
-    if (!FitColumnOfRow(ul, vl, left_inliers_, &a_left, &b_left)) return false;
-    if (!FitColumnOfRow(ur, vr, right_inliers_, &a_right, &b_right)) return false;
+    if (!FitColumnOfRow(ul, vl, left_inliers_, left_weights_, &a_left, &b_left)) return false;
+    if (!FitColumnOfRow(ur, vr, right_inliers_, right_weights_, &a_right, &b_right)) {
+      return false;
+    }
     const T two_cx(2.0 * intrinsics_.cx);
     int k = 0;
     for (size_t i = 0; i < ul.size(); ++i) {
-      residuals[k++] = loss_.Apply((two_cx - ul[i]) - (a_right * vl[i] + b_right));
+      const T r = (two_cx - ul[i]) - (a_right * vl[i] + b_right);
+      residuals[k++] = loss_.Apply(left_scale_.empty() ? r : T(left_scale_[i]) * r);
     }
     for (size_t i = 0; i < ur.size(); ++i) {
-      residuals[k++] = loss_.Apply((two_cx - ur[i]) - (a_left * vr[i] + b_left));
+      const T r = (two_cx - ur[i]) - (a_left * vr[i] + b_left);
+      residuals[k++] = loss_.Apply(right_scale_.empty() ? r : T(right_scale_[i]) * r);
     }
     return true;
   }
@@ -84,24 +94,33 @@ class SymmetryResidual {
     return true;
   }
 
-  // Line u = a v + b through the mapped inliers (least squares).
+  static std::vector<double> SquareRoots(const std::vector<double>& weights) {
+    std::vector<double> roots(weights.size());
+    for (size_t i = 0; i < weights.size(); ++i) roots[i] = std::sqrt(weights[i]);
+    return roots;
+  }
+
+  // Line u = a v + b through the mapped inliers (least squares, weighted when weights are given).
   template <typename T>
   static bool FitColumnOfRow(const std::vector<T>& u, const std::vector<T>& v,
-                             const std::vector<char>& keep, T* a, T* b) {
-    return FitSubset(u, v, keep, a, b);
+                             const std::vector<char>& keep, const std::vector<double>& weights,
+                             T* a, T* b) {
+    return FitSubset(u, v, keep, weights, a, b);
   }
 
   template <typename T>
   static bool FitSubset(const std::vector<T>& u, const std::vector<T>& v,
-                        const std::vector<char>& keep, T* a, T* b) {
+                        const std::vector<char>& keep, const std::vector<double>& weights, T* a,
+                        T* b) {
     T n(0.0), sv(0.0), su(0.0), svv(0.0), svu(0.0);
     for (size_t i = 0; i < u.size(); ++i) {
       if (!keep[i]) continue;
-      n += T(1.0);
-      sv += v[i];
-      su += u[i];
-      svv += v[i] * v[i];
-      svu += v[i] * u[i];
+      const T w(weights.empty() ? 1.0 : weights[i]);
+      n += w;
+      sv += w * v[i];
+      su += w * u[i];
+      svv += w * v[i] * v[i];
+      svu += w * v[i] * u[i];
     }
     const T det = n * svv - sv * sv;
     using std::abs;
@@ -121,6 +140,8 @@ class SymmetryResidual {
   // too: the mask is found once, in the real image, and does not depend on the parameters.
   const std::vector<char> left_inliers_;
   const std::vector<char> right_inliers_;
+  const std::vector<double> left_weights_, right_weights_;  // Empty: every weight 1.
+  const std::vector<double> left_scale_, right_scale_;      // Their square roots.
 };
 
 }  // namespace corridor

@@ -53,6 +53,8 @@ std::vector<BadOption> BadOptions() {
        "offset step -0.1 must be positive"},
       {"points_per_line_zero", [](RecoverDepthOptions* o) { o->points_per_line = 0; },
        "points_per_line"},
+      {"solver_evidence_unknown", [](RecoverDepthOptions* o) { o->solver_evidence = "pixels"; },
+       "solver_evidence must be lines or edges, not 'pixels'"},
       {"width_bounds_inverted",
        [](RecoverDepthOptions* o) {
          o->min_width = 5;
@@ -114,6 +116,7 @@ TEST(BadOptions, DepthToolExitsTwoBeforeAnyWork) {
       {"--solver=", "empty solver name"},
       {"--rasterizer=splat", "splat"},
       {"--points_per_line=0", "points_per_line"},
+      {"--solver_evidence=pixels", "solver_evidence"},
       {"--max_range=-1", "max_range"},
       {"--roi_top=2", "roi_top_fraction"},
       {"--ceiling_height=-2", "ceiling_height"},
