@@ -50,8 +50,9 @@ bool CorridorObservation::Check(std::string* why) const {
     reason = "junction points must be finite";
   } else if (!WeightsValid(left_weights, left.size()) ||
              !WeightsValid(right_weights, right.size())) {
-    reason = "junction weights must be empty or one per point, finite and >= 0, with at least 2 "
-             "positive a side";
+    reason =
+        "junction weights must be empty or one per point, finite and >= 0, with at least 2 "
+        "positive a side";
   }
   if (reason.empty()) return true;
   if (why != nullptr) *why = reason;

@@ -86,7 +86,8 @@ TEST(JunctionEdgePointsTest, PointsLieOnTheDrawnEdgeToATenthOfAPixel) {
 TEST(JunctionEdgePointsTest, WeightsFollowTheSquaredContrastUpToTheCap) {
   const double u0 = 90.6, slope = 0.45;
   // Rows 10-69 have contrast 60, rows 70-139 120 (the median row's), rows 140-189 180.
-  const auto contrast = [](int v) { return v >= 140 ? 180.0 : v >= 70 ? 120.0 : 60.0; };
+  const auto contrast = [](int v) { return v >= 140 ? 180.0 : v >= 70 ? 120.0
+                                                                      : 60.0; };
   const cv::Mat bgr = BlurredEdge(240, 200, u0, slope, 1.2, contrast);
   JunctionLine junction = DetectedJunction(u0, slope, -0.4, 10, 189);
   JunctionEdgePointOptions options;
