@@ -18,6 +18,7 @@ void VisitRecoverDepthOptions(RecoverDepthOptions* o, OptionVisitor* v) {
   v->Double("max_ceiling_change", &o->max_ceiling_change);
   v->Int("points_per_line", &o->points_per_line);
   v->String("solver_evidence", &o->solver_evidence);
+  v->Bool("level_roll", &o->level_roll);
   v->Int("search_max_width", &o->search_max_width);
   v->Int("junction_max_width", &o->perception.max_work_width);
   v->Double("baseboard_band_contrast", &o->perception.baseboard_band_contrast);

@@ -9,6 +9,7 @@
 #include "pipeline/frame_handover.h"
 #include "pipeline/image_input.h"
 #include "pipeline/one_junction.h"
+#include "pipeline/roll_leveling.h"
 #include "pipeline/plausibility.h"
 #include "pipeline/sequence_holds.h"
 #include "pipeline/solver_evidence.h"
@@ -46,6 +47,12 @@ Status DepthRecoverer::Create(const RecoverDepthOptions& options,
   status = CreateRasterizer(options.rasterizer, options.rasterizer_options, &rasterizer);
   if (!status.ok()) return status;
   recoverer->reset(new DepthRecoverer(options, std::move(solver), std::move(rasterizer)));
+  if (options.level_roll) {
+    RecoverDepthOptions level = options;
+    level.level_roll = false;
+    status = Create(level, &(*recoverer)->level_);
+    if (!status.ok()) return status;
+  }
   return Status::Ok();
 }
 
@@ -152,6 +159,13 @@ Status DepthRecoverer::Detect(const cv::Mat& image, const Camera& camera,
 
 Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* result,
                                    const CorridorGeometry* previous) const {
+  const Status status = ReconstructAsSeen(camera, result, previous);
+  if (status.ok() && level_ != nullptr) LevelRoll(*level_, camera, previous, result);
+  return result->status;
+}
+
+Status DepthRecoverer::ReconstructAsSeen(const Camera& camera, RecoverDepthResult* result,
+                                         const CorridorGeometry* previous) const {
   const auto start = Clock::now();
   const auto finish = [&](Status status) {
     result->status = status;

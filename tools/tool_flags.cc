@@ -63,6 +63,9 @@ DEFINE_int32(redetect_interval, 10,
              "With --track_junctions, search the whole region again after this many tracked "
              "frames in a row (0 = never once trusted)");
 DEFINE_int32(points_per_line, 30, "Points sampled along each junction line for the solver");
+DEFINE_bool(level_roll, corridor::RecoverDepthOptions().level_roll,
+            "Estimate the camera's roll from the walls' vertical edges and, when they show it "
+            "clearly, recover the frame turned level (for handheld and head-mounted cameras)");
 DEFINE_string(solver_evidence, corridor::RecoverDepthOptions().solver_evidence,
               "What the solvers fit: lines (points_per_line points on each fitted junction line) "
               "or edges (each junction's measured sub-pixel edge points, weighted by the gradient "
@@ -123,6 +126,7 @@ Status RecoverDepthOptionsFromFlags(RecoverDepthOptions* options) {
   options->max_ceiling_change = FLAGS_max_ceiling_change;
   options->points_per_line = FLAGS_points_per_line;
   options->solver_evidence = FLAGS_solver_evidence;
+  options->level_roll = FLAGS_level_roll;
   options->search_max_width = FLAGS_search_max_width;
   options->perception.max_work_width = FLAGS_junction_max_width;
   options->perception.baseboard_band_contrast = FLAGS_baseboard_band_contrast;

@@ -29,6 +29,7 @@ DECLARE_double(max_ceiling_disagreement);
 DECLARE_double(max_ceiling_change);
 DECLARE_int32(points_per_line);
 DECLARE_string(solver_evidence);
+DECLARE_bool(level_roll);
 DECLARE_int32(search_max_width);
 DECLARE_int32(junction_max_width);
 DECLARE_double(baseboard_band_contrast);

@@ -29,6 +29,7 @@ struct RecoverDepthOptions {
   SolverOptions solver_options;                // Options of every solver.
   RasterizerOptions rasterizer_options;        // Options of every rasteriser.
   int points_per_line = 30;                    // N: points sampled along each junction (paper III-B).
+  bool level_roll = false;                     // Estimate the camera's roll about its optical axis from the walls' vertical edges and, when the evidence is clear, recover the frame turned level (result->roll); the depth is turned back.
   std::string solver_evidence = "lines";       // What the solvers fit: "lines", points_per_line points on each fitted junction line; "edges", each junction's measured sub-pixel edge points with weights (a side with fewer than points_per_line of them falls back to its line's points).
   double min_width = 0.5;                      // Narrower estimates are implausible, m.
   double max_width = 20.0;                     // Wider estimates are implausible, m.
@@ -95,6 +96,7 @@ struct RecoverDepthResult {
   FrameEvidence evidence;          // What the confidence was computed from.
   int moved_side = -1;             // The wall the inner-line check moved out (0 left, 1 right; -1 none).
   bool lower_line_taken = false;   // True when the baseboard check took a lower parallel line (ceiling_checks_baseboards).
+  double roll = 0;                 // The roll the frame was recovered level from (level_roll), rad; 0 when not turned.
 
   // After Detect: both junctions were found, or only one (Reconstruct may then use a known width).
   bool ReadyToReconstruct() const {
@@ -147,9 +149,15 @@ class DepthRecoverer {
   DepthRecoverer(const RecoverDepthOptions& options, std::unique_ptr<CorridorSolver> solver,
                  std::unique_ptr<DepthRasterizer> rasterizer);
 
+  // Reconstruct without the roll's levelling.
+  Status ReconstructAsSeen(const Camera& camera, RecoverDepthResult* result,
+                           const CorridorGeometry* previous) const;
+
   const RecoverDepthOptions options_;
   const std::unique_ptr<CorridorSolver> solver_;
   const std::unique_ptr<DepthRasterizer> rasterizer_;
+  // With level_roll: the same options without it, which recovers a frame turned level.
+  std::unique_ptr<DepthRecoverer> level_;
 };
 
 // One-shot convenience: image + camera -> depth. Returns result->status.

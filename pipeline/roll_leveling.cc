@@ -1,0 +1,55 @@
+#include "pipeline/roll_leveling.h"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <utility>
+
+#include <opencv2/imgproc.hpp>
+
+#include "perception/roll_estimate.h"
+#include "pipeline/frame_handover.h"
+
+namespace corridor {
+
+void LevelRoll(const DepthRecoverer& level, const Camera& camera,
+               const CorridorGeometry* previous, RecoverDepthResult* result) {
+  if (result->handover == nullptr || result->handover->image.empty()) return;
+  const cv::Mat& bgr = result->handover->image;
+  const RollEstimate roll = EstimateRoll(bgr, camera, result->geometry, RollEstimateOptions());
+  if (!roll.found) return;
+  std::ostringstream note;
+  note.precision(2);
+  note << std::fixed << "a roll of " << roll.roll * 180.0 / M_PI << " deg (" << roll.segments
+       << " vertical edges)";
+  // The frame turned level: its pixel p goes to RollTurn(-roll) p.
+  const cv::Mat to_level = RollTurn(camera, -roll.roll);
+  cv::Mat level_bgr;
+  cv::warpAffine(bgr, level_bgr, to_level, bgr.size(), cv::INTER_LINEAR, cv::BORDER_REPLICATE);
+  RecoverDepthResult turned;
+  level.Detect(level_bgr, camera, &turned, nullptr);
+  if (turned.ReadyToReconstruct()) level.Reconstruct(camera, &turned, previous);
+  if (!turned.status.ok()) {
+    result->AddNote(note.str() + " found, but the level frame gave no depth (" +
+                    turned.status.message() + "): recovered as seen");
+    return;
+  }
+  // The depth back in the frame's pixels: depth(p) = level depth(RollTurn(-roll) p).
+  cv::Mat depth;
+  cv::warpAffine(turned.depth, depth, to_level, turned.depth.size(),
+                 cv::INTER_NEAREST | cv::WARP_INVERSE_MAP, cv::BORDER_CONSTANT,
+                 cv::Scalar(std::numeric_limits<double>::quiet_NaN()));
+  JunctionPair junctions = std::move(result->junctions);
+  std::shared_ptr<const FrameHandover> handover = std::move(result->handover);
+  const StageTimes times = result->times;
+  *result = std::move(turned);
+  result->junctions = std::move(junctions);
+  result->handover = std::move(handover);
+  result->depth = depth;
+  result->roll = roll.roll;
+  result->times.perception += times.perception;
+  result->times.total += times.total;
+  result->AddNote("recovered level: " + note.str());
+}
+
+}  // namespace corridor

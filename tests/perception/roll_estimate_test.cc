@@ -1,0 +1,91 @@
+// EstimateRoll on frames of the generator's head-mounted class, whose poses carry a roll of up
+// to 3 degrees: the roll found against the pose's, and none found on the same frames rendered
+// without it. RollTurn against a rotation worked out by hand.
+#include "perception/roll_estimate.h"
+
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "synth/corridor_renderer.h"
+#include "synth/real_buildings.h"
+
+namespace corridor {
+namespace {
+
+constexpr double kDeg = M_PI / 180.0;
+
+// Scene `scene` of the head-mounted class with its first `frames` poses.
+synth::ScenePreset HeadScene(int scene, int frames) {
+  synth::RealBuildingsOptions options;
+  options.scenes = scene + 1;
+  options.frames = frames;
+  std::vector<synth::ScenePreset> presets;
+  EXPECT_TRUE(synth::RealBuildingsPreset("head", options, &presets).ok());
+  return presets.at(scene);
+}
+
+// Frames 5-10 of the first scene: rolls of -3.0 to 2.8 degrees.
+constexpr size_t kFirst = 5, kEnd = 11;
+
+TEST(RollEstimateTest, FindsTheRollOfAHeadMountedCamera) {
+  const synth::ScenePreset preset = HeadScene(0, kEnd);
+  int found = 0;
+  for (size_t i = kFirst; i < kEnd; ++i) {
+    synth::Frame frame;
+    ASSERT_TRUE(synth::RenderFrame(preset.scene, preset.camera, preset.poses[i], &frame).ok());
+    const RollEstimate roll =
+        EstimateRoll(frame.bgr, preset.camera, frame.truth, RollEstimateOptions());
+    std::printf("frame %zu: true roll %.2f deg, found %d, %.2f deg from %d segments\n", i,
+                preset.poses[i].roll / kDeg, roll.found, roll.roll / kDeg, roll.segments);
+    if (!roll.found) continue;
+    ++found;
+    EXPECT_NEAR(roll.roll, preset.poses[i].roll, 0.5 * kDeg) << "frame " << i;
+  }
+  EXPECT_GE(found, 4);  // The premise: the scene's door frames show the roll.
+}
+
+TEST(RollEstimateTest, FindsNoneWithoutRoll) {
+  synth::ScenePreset preset = HeadScene(0, kEnd);
+  for (size_t i = kFirst; i < kEnd; ++i) {
+    synth::CameraPose pose = preset.poses[i];
+    pose.roll = 0;
+    synth::Frame frame;
+    ASSERT_TRUE(synth::RenderFrame(preset.scene, preset.camera, pose, &frame).ok());
+    const RollEstimate roll =
+        EstimateRoll(frame.bgr, preset.camera, frame.truth, RollEstimateOptions());
+    EXPECT_LE(std::abs(roll.roll), 0.3 * kDeg) << "frame " << i;
+  }
+}
+
+TEST(RollEstimateTest, RollTurnIsARotationAboutThePrincipalPoint) {
+  Camera camera;
+  camera.fx = camera.fy = 500;
+  camera.cx = 320;
+  camera.cy = 240;
+  const cv::Mat m = RollTurn(camera, 90 * kDeg);
+  // Turned by 90 degrees (Rz: x' = -y, y' = x about the principal point): (420, 240), 100 px
+  // right of it, goes 100 px below it; the principal point stays.
+  const auto map = [&](double u, double v) {
+    return cv::Point2d(m.at<double>(0, 0) * u + m.at<double>(0, 1) * v + m.at<double>(0, 2),
+                       m.at<double>(1, 0) * u + m.at<double>(1, 1) * v + m.at<double>(1, 2));
+  };
+  EXPECT_NEAR(map(420, 240).x, 320, 1e-9);
+  EXPECT_NEAR(map(420, 240).y, 340, 1e-9);
+  EXPECT_NEAR(map(320, 240).x, 320, 1e-9);
+  EXPECT_NEAR(map(320, 240).y, 240, 1e-9);
+}
+
+TEST(RollEstimateTest, BadOptionsAreRejected) {
+  RollEstimateOptions options;
+  std::string why;
+  EXPECT_TRUE(options.Check(&why)) << why;
+  options.max_cost_fraction = 0;
+  EXPECT_FALSE(options.Check(&why));
+  EXPECT_NE(why.find("max_cost_fraction"), std::string::npos) << why;
+}
+
+}  // namespace
+}  // namespace corridor

@@ -1,0 +1,64 @@
+// level_roll end to end on rolled frames of the generator's head-mounted class: the roll the
+// frame was recovered level from against the pose's, and the depth, turned back to the frame's
+// pixels, against the ray-cast truth, with and without levelling.
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "corridor_depth/recover_depth.h"
+#include "synth/corridor_renderer.h"
+#include "synth/real_buildings.h"
+
+namespace corridor {
+namespace {
+
+// Mean |d - t| / t over the pixels with truth below 5 m and an estimate.
+double AbsRelBelow5m(const cv::Mat& depth, const cv::Mat& truth) {
+  double sum = 0;
+  long count = 0;
+  for (int v = 0; v < truth.rows; ++v) {
+    for (int u = 0; u < truth.cols; ++u) {
+      const float t = truth.at<float>(v, u), d = depth.at<float>(v, u);
+      if (!(t > 0 && t < 5) || !std::isfinite(d)) continue;
+      sum += std::abs(d - t) / t;
+      ++count;
+    }
+  }
+  return count > 0 ? sum / count : NAN;
+}
+
+TEST(RollLevelingTest, ARolledFrameIsRecoveredLevel) {
+  synth::RealBuildingsOptions preset_options;
+  preset_options.scenes = 1;
+  preset_options.frames = 11;
+  std::vector<synth::ScenePreset> presets;
+  ASSERT_TRUE(synth::RealBuildingsPreset("head", preset_options, &presets).ok());
+  const synth::ScenePreset& preset = presets[0];
+  RecoverDepthOptions as_seen_options, level_options;
+  level_options.level_roll = true;
+  std::unique_ptr<DepthRecoverer> as_seen, level;
+  ASSERT_TRUE(DepthRecoverer::Create(as_seen_options, &as_seen).ok());
+  ASSERT_TRUE(DepthRecoverer::Create(level_options, &level).ok());
+  for (const int i : {9, 10}) {  // Rolls of -3.0 and -2.6 degrees.
+    const synth::CameraPose& pose = preset.poses[i];
+    synth::Frame frame;
+    ASSERT_TRUE(synth::RenderFrame(preset.scene, preset.camera, pose, &frame).ok());
+    RecoverDepthResult seen, turned;
+    ASSERT_TRUE(as_seen->Recover(frame.bgr, preset.camera, &seen).ok());
+    ASSERT_TRUE(level->Recover(frame.bgr, preset.camera, &turned).ok());
+    const double seen_error = AbsRelBelow5m(seen.depth, frame.depth);
+    const double level_error = AbsRelBelow5m(turned.depth, frame.depth);
+    std::printf("frame %d: roll %.2f deg, found %.2f deg; AbsRel < 5 m %.4f as seen, %.4f level\n",
+                i, pose.roll * 180 / M_PI, turned.roll * 180 / M_PI, seen_error, level_error);
+    EXPECT_EQ(seen.roll, 0);
+    EXPECT_NEAR(turned.roll, pose.roll, 0.5 * M_PI / 180) << i;
+    EXPECT_NE(turned.fallback.find("recovered level"), std::string::npos) << turned.fallback;
+    EXPECT_EQ(turned.depth.size(), frame.bgr.size());
+    EXPECT_LT(level_error, 0.7 * seen_error) << i;
+  }
+}
+
+}  // namespace
+}  // namespace corridor
