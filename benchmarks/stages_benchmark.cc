@@ -29,6 +29,7 @@
 #include "perception/line_segments.h"
 #include "pipeline/inner_line_check.h"
 #include "pipeline/plausibility.h"
+#include "pipeline/solver_evidence.h"
 #include "corridor_depth/recover_depth.h"
 
 namespace corridor {
@@ -173,7 +174,7 @@ bool DetectedObservation(const bench::BenchFrame& input, CorridorObservation* ob
   if (!DetectJunctions(input.frame.bgr, options.perception, &pair).ok() || !pair.status.ok()) {
     return false;
   }
-  *observation = ObservationFromJunctions(pair, input.camera, options.points_per_line);
+  *observation = ObservationFromJunctions(pair, input.camera, options);
   return true;
 }
 

@@ -2,40 +2,10 @@
 
 #include <cmath>
 #include <sstream>
-#include <vector>
 
 #include "estimation/line_fit.h"
 
 namespace corridor {
-namespace {
-
-// Points along a junction line, in ideal (undistorted) pixels.
-void IdealSamples(const JunctionLine& line, int n, const Camera& camera,
-                  std::vector<Eigen::Vector2d>* points) {
-  SampleAlongLine(line, n, points);
-  for (auto& p : *points) p = camera.Undistort(p);
-}
-
-}  // namespace
-
-CorridorObservation ObservationFromJunctions(const JunctionPair& junctions, const Camera& camera,
-                                             int points_per_line) {
-  CorridorObservation observation;
-  ObservationFromJunctions(junctions, camera, points_per_line, &observation);
-  return observation;
-}
-
-void ObservationFromJunctions(const JunctionPair& junctions, const Camera& camera,
-                              int points_per_line, CorridorObservation* observation) {
-  std::vector<Eigen::Vector2d> left, right;
-  left.swap(observation->left);
-  right.swap(observation->right);
-  *observation = CorridorObservation::FromCamera(camera);
-  IdealSamples(junctions.left, points_per_line, camera, &left);
-  IdealSamples(junctions.right, points_per_line, camera, &right);
-  observation->left.swap(left);
-  observation->right.swap(right);
-}
 
 Status CheckPlausible(const CorridorGeometry& g, const RecoverDepthOptions& options) {
   std::ostringstream msg;

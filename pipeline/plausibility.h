@@ -9,14 +9,6 @@
 
 namespace corridor {
 
-// The solvers' input from detected junctions: n points along each line, undistorted to ideal
-// pixels, with the camera's intrinsics and height.
-CorridorObservation ObservationFromJunctions(const JunctionPair& junctions, const Camera& camera,
-                                             int points_per_line);
-// The same into *observation, whose point vectors keep their memory.
-void ObservationFromJunctions(const JunctionPair& junctions, const Camera& camera,
-                              int points_per_line, CorridorObservation* observation);
-
 // Is the estimate a corridor? kImplausibleGeometry with the reason otherwise.
 Status CheckPlausible(const CorridorGeometry& geometry, const RecoverDepthOptions& options);
 
