@@ -31,6 +31,11 @@ CorridorGeometry Trusted() {
 struct Frame {
   CorridorGeometry geometry;
   RecoverDepthResult result;
+  // HoldCeiling against the trusted ceiling (Trusted()).
+  void HoldTrusted(bool frame_doubted) {
+    const CorridorGeometry previous = Trusted();
+    HoldCeiling(&previous, kMaxDisagreement, kMinSupport, frame_doubted, &geometry, &result);
+  }
 };
 
 // A frame whose ceiling search found 2.5 m, with each side's height and support as given.
@@ -58,8 +63,7 @@ TEST(OwnEvidenceTest, ACeilingWhoseSidesAreTooWeakToCompareIsKeptOnAFrameNotInDo
   const CorridorGeometry previous = Trusted();
   EXPECT_TRUE(CeilingHoldConsidered(&previous, kMaxDisagreement, kMinSupport, f.geometry,
                                     &f.result));
-  HoldCeiling(&previous, kMaxDisagreement, kMinSupport, /*frame_doubted=*/false, &f.geometry,
-              &f.result);
+  f.HoldTrusted(/*frame_doubted=*/false);
   EXPECT_FALSE(f.result.ceiling_held);
   EXPECT_FALSE(f.result.ceiling_trusted);
   EXPECT_EQ(f.geometry.ceiling_height, 2.5);
@@ -72,15 +76,12 @@ TEST(OwnEvidenceTest, AStrongSideThatAgreesWithTheTrustedCeilingConfirmsIt) {
   // The strong left side at 2.85 m: 2.35 m above the camera, |log(2.35 / 2.4)| = 0.021 <= 0.10.
   // The weak right one (support 0.30) at 2.15 m pulled the frame's ceiling down to 2.5 m.
   Frame f = FoundCeiling(2.85, 0.8, 2.15, 0.30);
-  const CorridorGeometry previous = Trusted();
-  HoldCeiling(&previous, kMaxDisagreement, kMinSupport, /*frame_doubted=*/false, &f.geometry,
-              &f.result);
+  f.HoldTrusted(/*frame_doubted=*/false);
   EXPECT_TRUE(f.result.ceiling_held);
   EXPECT_EQ(f.geometry.ceiling_height, 2.9);
   // The same height on the weak side confirms nothing.
   Frame weak = FoundCeiling(2.15, 0.8, 2.85, 0.30);
-  HoldCeiling(&previous, kMaxDisagreement, kMinSupport, /*frame_doubted=*/false, &weak.geometry,
-              &weak.result);
+  weak.HoldTrusted(/*frame_doubted=*/false);
   EXPECT_FALSE(weak.result.ceiling_held);
   EXPECT_EQ(weak.geometry.ceiling_height, 2.5);
 }
@@ -132,9 +133,7 @@ TEST(OwnEvidenceTest, AWiderFrameTakesTheTrustedCeiling) {
   // trusted one, came with walls put too far.
   Frame f = FoundCeiling(2.5, 0.8, 2.5, 0.30);
   f.geometry.SetWallDistances(1.3, 1.3);
-  const CorridorGeometry previous = Trusted();
-  HoldCeiling(&previous, kMaxDisagreement, kMinSupport, /*frame_doubted=*/false, &f.geometry,
-              &f.result);
+  f.HoldTrusted(/*frame_doubted=*/false);
   EXPECT_TRUE(f.result.ceiling_held);
   EXPECT_FALSE(f.result.ceiling_kept);
   EXPECT_EQ(f.geometry.ceiling_height, 2.9);
@@ -142,9 +141,7 @@ TEST(OwnEvidenceTest, AWiderFrameTakesTheTrustedCeiling) {
 
 TEST(OwnEvidenceTest, ADoubtedFrameTakesTheTrustedCeiling) {
   Frame f = FoundCeiling(2.5, 0.8, 2.5, 0.30);
-  const CorridorGeometry previous = Trusted();
-  HoldCeiling(&previous, kMaxDisagreement, kMinSupport, /*frame_doubted=*/true, &f.geometry,
-              &f.result);
+  f.HoldTrusted(/*frame_doubted=*/true);
   EXPECT_TRUE(f.result.ceiling_held);
   EXPECT_EQ(f.geometry.ceiling_height, 2.9);
 }
@@ -154,9 +151,7 @@ TEST(OwnEvidenceTest, SidesThatDisagreeAreEvidenceAgainstTheFramesCeiling) {
   // 0.288 > 0.10: a wall is wrong, and the trusted ceiling is held even on a frame not in doubt.
   Frame f = FoundCeiling(2.0, 0.8, 2.5, 0.8);
   ASSERT_NEAR(CeilingDisagreement(f.result.ceiling, 0.5, kMinSupport), 0.2877, 1e-4);
-  const CorridorGeometry previous = Trusted();
-  HoldCeiling(&previous, kMaxDisagreement, kMinSupport, /*frame_doubted=*/false, &f.geometry,
-              &f.result);
+  f.HoldTrusted(/*frame_doubted=*/false);
   EXPECT_TRUE(f.result.ceiling_held);
   EXPECT_EQ(f.geometry.ceiling_height, 2.9);
 }
@@ -165,9 +160,7 @@ TEST(OwnEvidenceTest, AFrameWithoutACeilingTakesTheTrustedOne) {
   Frame f = FoundCeiling(0, 0, 0, 0);
   f.result.ceiling.found = false;
   f.geometry.ceiling_height = 0;
-  const CorridorGeometry previous = Trusted();
-  HoldCeiling(&previous, kMaxDisagreement, kMinSupport, /*frame_doubted=*/false, &f.geometry,
-              &f.result);
+  f.HoldTrusted(/*frame_doubted=*/false);
   EXPECT_TRUE(f.result.ceiling_held);
   EXPECT_EQ(f.geometry.ceiling_height, 2.9);
 }
@@ -179,8 +172,7 @@ TEST(OwnEvidenceTest, AgreeingSidesAreTrustedAndNothingIsHeld) {
   EXPECT_FALSE(CeilingHoldConsidered(&previous, kMaxDisagreement, kMinSupport, f.geometry,
                                      &f.result));
   EXPECT_TRUE(f.result.ceiling_trusted);
-  HoldCeiling(&previous, kMaxDisagreement, kMinSupport, /*frame_doubted=*/true, &f.geometry,
-              &f.result);
+  f.HoldTrusted(/*frame_doubted=*/true);
   EXPECT_FALSE(f.result.ceiling_held);
   EXPECT_EQ(f.geometry.ceiling_height, 2.5);
 }
