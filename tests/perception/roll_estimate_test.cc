@@ -1,6 +1,8 @@
 // EstimateRoll on frames of the generator's head-mounted class, whose poses carry a roll of up
 // to 3 degrees: the roll found against the pose's, and none found on the same frames rendered
-// without it. RollTurn against a rotation worked out by hand.
+// without it, nor on level cameras of other classes, even when the corridor's fit gives them a
+// wrong pitch. RollTurn against a rotation
+// worked out by hand.
 #include "perception/roll_estimate.h"
 
 #include <cmath>
@@ -17,15 +19,16 @@ namespace {
 
 constexpr double kDeg = M_PI / 180.0;
 
-// Scene `scene` of the head-mounted class with its first `frames` poses.
-synth::ScenePreset HeadScene(int scene, int frames) {
+// Scene `scene` of a class of the real-buildings preset with its first `frames` poses.
+synth::ScenePreset ClassScene(const char* name, int scene, int frames) {
   synth::RealBuildingsOptions options;
   options.scenes = scene + 1;
   options.frames = frames;
   std::vector<synth::ScenePreset> presets;
-  EXPECT_TRUE(synth::RealBuildingsPreset("head", options, &presets).ok());
+  EXPECT_TRUE(synth::RealBuildingsPreset(name, options, &presets).ok());
   return presets.at(scene);
 }
+synth::ScenePreset HeadScene(int scene, int frames) { return ClassScene("head", scene, frames); }
 
 // Frames 5-10 of the first scene: rolls of -3.0 to 2.8 degrees.
 constexpr size_t kFirst = 5, kEnd = 11;
@@ -42,7 +45,7 @@ TEST(RollEstimateTest, FindsTheRollOfAHeadMountedCamera) {
                 preset.poses[i].roll / kDeg, roll.found, roll.roll / kDeg, roll.segments);
     if (!roll.found) continue;
     ++found;
-    EXPECT_NEAR(roll.roll, preset.poses[i].roll, 0.5 * kDeg) << "frame " << i;
+    EXPECT_NEAR(roll.roll, preset.poses[i].roll, 0.2 * kDeg) << "frame " << i;
   }
   EXPECT_GE(found, 4);  // The premise: the scene's door frames show the roll.
 }
@@ -57,6 +60,29 @@ TEST(RollEstimateTest, FindsNoneWithoutRoll) {
     const RollEstimate roll =
         EstimateRoll(frame.bgr, preset.camera, frame.truth, RollEstimateOptions());
     EXPECT_LE(std::abs(roll.roll), 0.3 * kDeg) << "frame " << i;
+  }
+}
+
+// Level cameras whose verticals stand mostly on one side (a low robot's door frames, a pillar
+// at the image's edge beside a carpet): short segments and an unbalanced pitch tilt, no roll.
+TEST(RollEstimateTest, FindsNoneOnLevelCamerasWithOneSidedVerticals) {
+  const struct {
+    const char* name;
+    int scene, frame;
+  } cases[] = {{"low", 1, 3}, {"low", 2, 3}, {"carpet", 4, 19}, {"carpet", 3, 12}};
+  for (const auto& c : cases) {
+    const synth::ScenePreset preset = ClassScene(c.name, c.scene, c.frame + 1);
+    synth::Frame frame;
+    ASSERT_TRUE(synth::RenderFrame(preset.scene, preset.camera, preset.poses[c.frame], &frame).ok());
+    ASSERT_EQ(preset.poses[c.frame].roll, 0.0);
+    for (const double error : {-1.0, 0.0, 1.0}) {
+      CorridorGeometry fit = frame.truth;
+      fit.pitch += error * kDeg;
+      const RollEstimate roll = EstimateRoll(frame.bgr, preset.camera, fit, RollEstimateOptions());
+      std::printf("%s %d/%d pitch %+.0f: found %d, %.2f deg\n", c.name, c.scene, c.frame, error, roll.found, roll.roll / kDeg);
+      EXPECT_LE(std::abs(roll.roll), 0.3 * kDeg)
+          << c.name << " scene " << c.scene << " frame " << c.frame << ", pitch off by " << error;
+    }
   }
 }
 
