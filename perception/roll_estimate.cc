@@ -6,6 +6,8 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "perception/vertical_segments.h"
+
 namespace corridor {
 namespace {
 
@@ -21,47 +23,6 @@ double AngleTo(const cv::Vec4d& s, const cv::Vec3d& h) {
   if (!(length > 0) || !(norm > 0)) return M_PI / 2;
   const double ux = (bx - ax) / length, uy = (by - ay) / length;
   return std::asin(std::min(1.0, std::abs(ux * ty - uy * tx) / norm));
-}
-
-// A near-vertical segment's line to a fraction of a pixel: on each of its rows, the peak of the
-// horizontal gradient's magnitude within 2 px of it, placed by a parabola through three samples;
-// then x = a + b y fitted to them by least squares, once more without the rows more than 1 px
-// off. Hough's integer end points tilt a 50-pixel segment by up to a degree, as much as the
-// rolls sought. Returns the segment unchanged when fewer than half its rows have a peak.
-cv::Vec4d RefineVertical(const cv::Vec4i& s, const cv::Mat& gx) {
-  const cv::Vec4d as_found(s[0], s[1], s[2], s[3]);
-  const int y0 = std::max(1, std::min(s[1], s[3])), y1 = std::min(gx.rows - 2, std::max(s[1], s[3]));
-  if (y1 - y0 < 4 || s[1] == s[3]) return as_found;
-  const double slope = double(s[2] - s[0]) / (s[3] - s[1]);
-  std::vector<cv::Point2d> peaks;
-  for (int y = y0; y <= y1; ++y) {
-    const int x = static_cast<int>(std::lround(s[0] + slope * (y - s[1])));
-    int best = -1;
-    float best_g = 0;
-    for (int c = std::max(1, x - 2); c <= std::min(gx.cols - 2, x + 2); ++c) {
-      const float g = std::abs(gx.at<float>(y, c));
-      if (g > best_g) best_g = g, best = c;
-    }
-    if (best < 0) continue;
-    const double l = std::abs(gx.at<float>(y, best - 1)), r = std::abs(gx.at<float>(y, best + 1));
-    if (!(best_g >= l && best_g >= r)) continue;
-    const double curvature = l - 2 * best_g + r;
-    peaks.emplace_back(best + (curvature < 0 ? 0.5 * (l - r) / curvature : 0.0), y);
-  }
-  if (2 * peaks.size() < static_cast<size_t>(y1 - y0 + 1)) return as_found;
-  double a = 0, b = 0;
-  for (int pass = 0; pass < 2; ++pass) {
-    double n = 0, sy = 0, sx = 0, syy = 0, sxy = 0;
-    for (const cv::Point2d& p : peaks) {
-      if (pass == 1 && std::abs(p.x - (a + b * p.y)) > 1.0) continue;
-      n += 1, sy += p.y, sx += p.x, syy += p.y * p.y, sxy += p.x * p.y;
-    }
-    const double det = n * syy - sy * sy;
-    if (n < 5 || !(det > 0)) return as_found;
-    b = (n * sxy - sy * sx) / det;
-    a = (sx - b * sy) / n;
-  }
-  return cv::Vec4d(a + b * s[1], s[1], a + b * s[3], s[3]);
 }
 
 }  // namespace
@@ -94,11 +55,6 @@ RollEstimate EstimateRoll(const cv::Mat& bgr, const Camera& camera,
                           const CorridorGeometry& geometry, const RollEstimateOptions& options) {
   RollEstimate out;
   if (bgr.empty() || bgr.type() != CV_8UC3 || !(camera.fx > 0) || !(camera.fy > 0)) return out;
-  cv::Mat grey, edges;
-  cv::cvtColor(bgr, grey, cv::COLOR_BGR2GRAY);
-  cv::Canny(grey, edges, 40, 120);
-  std::vector<cv::Vec4i> segments;
-  cv::HoughLinesP(edges, segments, 1, CV_PI / 360, 30, options.min_length_px, 3);
   const double th = geometry.pitch, ph = geometry.yaw;
   // The vertical vanishing point of a camera rolled by r: K Rz(r) (0, cos th, sin th).
   const auto vertical_vp = [&](double r) {
@@ -124,43 +80,89 @@ RollEstimate EstimateRoll(const cv::Mat& bgr, const Camera& camera,
     const double lateral = geometry.camera_height * m_r / n_r;
     return lateral > -geometry.LeftDistance() && lateral < geometry.RightDistance();
   };
+  // Each row's floor span, which the segment search skips (less 3 px each side, for the walls'
+  // verticals that end on the junction): where X = -d_l and X = d_r on the floor.
+  std::vector<cv::Vec2i> floor_span;
+  if (geometry.camera_height > 0 && geometry.width > 0 && std::cos(ph) > 0) {
+    floor_span.assign(bgr.rows, cv::Vec2i(0, 0));
+    for (int v = 0; v < bgr.rows; ++v) {
+      const double y = (v - camera.cy) / camera.fy;
+      const double n_r = std::cos(th) * y + std::sin(th);
+      if (!(n_r > 0)) continue;
+      const auto column = [&](double lateral) {
+        const double m_r = lateral * n_r / geometry.camera_height;
+        const double x = (m_r - std::sin(th) * std::sin(ph) * y + std::cos(th) * std::sin(ph)) /
+                         std::cos(ph);
+        return camera.cx + camera.fx * x;
+      };
+      const double begin = std::max(0.0, column(-geometry.LeftDistance()) + 3);
+      const double end = std::min<double>(bgr.cols, column(geometry.RightDistance()) - 3);
+      if (end > begin) floor_span[v] = cv::Vec2i(static_cast<int>(std::ceil(begin)),
+                                                 static_cast<int>(std::floor(end)));
+    }
+  }
+  VerticalSegmentOptions find;
+  find.min_length_px = options.min_length_px;
+  const std::vector<cv::Vec4d> segments = FindVerticalSegments(bgr, find, floor_span);
   std::vector<cv::Vec4d> candidates;
   const cv::Vec3d level = vertical_vp(0);
-  cv::Mat gx;
-  for (const cv::Vec4i& found : segments) {
-    const cv::Vec4d s(found[0], found[1], found[2], found[3]);
+  for (const cv::Vec4d& s : segments) {
     if (AngleTo(s, level) > options.candidate_deg * kDeg) continue;
     if (AngleTo(s, corridor_vp) < options.corridor_deg * kDeg) continue;
     if (on_floor(s[0], s[1]) && on_floor(s[2], s[3])) continue;
-    if (gx.empty()) cv::Sobel(grey, gx, CV_32F, 1, 0);
-    candidates.push_back(RefineVertical(found, gx));
+    candidates.push_back(s);
   }
   const double cap = options.inlier_deg * kDeg;
-  double best_cost = 1e300, cost_level = 0, best_roll = 0;
-  int best_inliers = 0, best_each_side = 0;
-  const int steps = static_cast<int>(std::lround(options.max_roll_deg / options.step_deg));
-  for (int i = -steps; i <= steps; ++i) {
-    const double r = i * options.step_deg * kDeg;
-    const cv::Vec3d vp = vertical_vp(r);
+  // Each candidate's middle, direction, length and side, for the search's many rolls.
+  struct Candidate {
+    double mx, my, ux, uy, length;
+    bool left;
+  };
+  std::vector<Candidate> prepared;
+  prepared.reserve(candidates.size());
+  for (const cv::Vec4d& s : candidates) {
+    const double length = std::hypot(s[2] - s[0], s[3] - s[1]);
+    if (!(length > 0)) continue;
+    prepared.push_back({0.5 * (s[0] + s[2]), 0.5 * (s[1] + s[3]), (s[2] - s[0]) / length,
+                        (s[3] - s[1]) / length, length, 0.5 * (s[0] + s[2]) < corridor_u});
+  }
+  struct Score {
     double cost = 0;
-    int inliers = 0, left = 0, right = 0;
-    for (const cv::Vec4d& s : candidates) {
-      const double angle = AngleTo(s, vp);
-      const double length = std::hypot(s[2] - s[0], s[3] - s[1]);
-      cost += length * std::min(angle * angle, cap * cap);
+    int inliers = 0, each_side = 0;
+  };
+  const auto score = [&](double r) {
+    const cv::Vec3d vp = vertical_vp(r);
+    Score result;
+    int left = 0, right = 0;
+    for (const Candidate& c : prepared) {
+      const double tx = vp[0] - vp[2] * c.mx, ty = vp[1] - vp[2] * c.my;
+      const double norm = std::hypot(tx, ty);
+      const double angle =
+          norm > 0 ? std::asin(std::min(1.0, std::abs(c.ux * ty - c.uy * tx) / norm)) : M_PI / 2;
+      result.cost += c.length * std::min(angle * angle, cap * cap);
       if (angle < cap) {
-        ++inliers;
-        (0.5 * (s[0] + s[2]) < corridor_u ? left : right) += 1;
+        ++result.inliers;
+        (c.left ? left : right) += 1;
       }
     }
-    if (i == 0) cost_level = cost;
-    if (cost < best_cost) {
-      best_cost = cost;
-      best_roll = r;
-      best_inliers = inliers;
-      best_each_side = std::min(left, right);
-    }
-  }
+    result.each_side = std::min(left, right);
+    return result;
+  };
+  // Coarse to fine: every fourth step over the whole range, then every step around the best.
+  const double step = options.step_deg * kDeg;
+  const int steps = static_cast<int>(std::lround(options.max_roll_deg / options.step_deg));
+  const double cost_level = score(0).cost;
+  Score best = score(0);
+  double best_roll = 0;
+  const auto consider = [&](int i) {
+    const Score here = score(i * step);
+    if (here.cost < best.cost) best = here, best_roll = i * step;
+  };
+  for (int i = -steps; i <= steps; i += 4) consider(i);
+  const int coarse = static_cast<int>(std::lround(best_roll / step));
+  for (int i = std::max(-steps, coarse - 3); i <= std::min(steps, coarse + 3); ++i) consider(i);
+  const double best_cost = best.cost;
+  const int best_inliers = best.inliers, best_each_side = best.each_side;
   out.segments = best_inliers;
   // The vertical vanishing point fitted freely to the agreeing segments: the direction v (camera
   // frame, unit) nearest to every segment's plane through the camera centre, length-weighted.

@@ -35,8 +35,8 @@ struct RollEstimate {
 
 // The roll of the camera that took `bgr` (8-bit BGR, `camera`'s size), given the corridor's yaw
 // and pitch estimated without it (`geometry`, whose width, offset and camera height mark the
-// floor, whose edges take no part). The segments are cv::HoughLinesP's on a grey Canny map,
-// refined to a fraction of a pixel on the image's gradient. A search over the roll at the fit's
+// floor, whose edges take no part). The segments are FindVerticalSegments' on the grey image,
+// placed to a fraction of a pixel. A search over the roll at the fit's
 // pitch (length-weighted angles to the rolled vertical vanishing point, each capped at
 // inlier_deg) picks the agreeing segments and gates the evidence; the roll is that of the
 // vertical vanishing point fitted freely to them, so that the fit's pitch error is not taken for

@@ -1,0 +1,154 @@
+#include "perception/vertical_segments.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+
+#include <opencv2/imgproc.hpp>
+
+namespace corridor {
+namespace {
+
+// A chain of peaks, one per scanned row, with the sums of a least-squares fit x = a + b y.
+struct Chain {
+  double n = 0, sy = 0, sx = 0, syy = 0, sxy = 0, sxx = 0;
+  int first_row = 0, last_row = 0;
+  double last_x = 0;
+  int sign = 0;
+
+  void Add(double x, int y) {
+    n += 1, sy += y, sx += x, syy += double(y) * y, sxy += x * y, sxx += x * x;
+    last_row = y;
+    last_x = x;
+  }
+};
+
+struct Peak {
+  double x;
+  int sign;
+};
+
+}  // namespace
+
+bool VerticalSegmentOptions::Check(std::string* why) const {
+  std::string reason;
+  if (row_step < 1 || row_step > 8) {
+    reason = "vertical segments: row_step must be in [1, 8]";
+  } else if (!(min_gradient > 0) || !(min_length_px > row_step) || !(max_rms_px > 0)) {
+    reason = "vertical segments: min_gradient and max_rms_px must be > 0, min_length_px > row_step";
+  } else if (!(max_tilt_deg > 0 && max_tilt_deg < 45)) {
+    reason = "vertical segments: max_tilt_deg must be in (0, 45)";
+  }
+  if (why != nullptr) *why = reason;
+  return reason.empty();
+}
+
+std::vector<cv::Vec4d> FindVerticalSegments(const cv::Mat& grey,
+                                            const VerticalSegmentOptions& options,
+                                            const std::vector<cv::Vec2i>& skip) {
+  std::vector<cv::Vec4d> out;
+  if (grey.empty() || grey.depth() != CV_8U || grey.rows < 3 || grey.cols < 3) return out;
+  // One channel: the image's own, or a colour image's green (index 1 of BGR): door frames and
+  // corners are edges in every channel, and green is the one a colour camera samples best.
+  const int stride = grey.channels(), channel = stride == 1 ? 0 : 1;
+  std::vector<short> row(grey.cols, 0);
+  const double max_slope = std::tan(options.max_tilt_deg * M_PI / 180.0);
+  // A chain continues to a peak at most this far from its last one, per scanned row (a gap of
+  // one scanned row allowed).
+  const double reach = options.row_step * max_slope + 0.75;
+
+  std::vector<Chain> chains;
+  std::vector<int> open, next_open;  // Indices of chains that may still continue, by last_x.
+  std::vector<Peak> peaks;
+  std::vector<char> taken;
+  const auto close = [&](const Chain& c) {
+    if (c.last_row - c.first_row < options.min_length_px) return;
+    const double det = c.n * c.syy - c.sy * c.sy;
+    if (!(det > 0)) return;
+    const double b = (c.n * c.sxy - c.sy * c.sx) / det;
+    const double a = (c.sx - b * c.sy) / c.n;
+    if (std::abs(b) > max_slope) return;
+    // Residual sum of squares of the least-squares line: sxx - a sx - b sxy.
+    const double rss = std::max(0.0, c.sxx - a * c.sx - b * c.sxy);
+    if (rss > options.max_rms_px * options.max_rms_px * c.n) return;
+    out.emplace_back(a + b * c.first_row, c.first_row, a + b * c.last_row, c.last_row);
+  };
+
+  const int threshold = static_cast<int>(std::ceil(options.min_gradient));
+  for (int y = 1; y < grey.rows - 1; y += options.row_step) {
+    // The columns scanned: [1, cols - 1) less the row's skipped span.
+    int span_begin = grey.cols - 1, span_end = grey.cols - 1;
+    if (static_cast<int>(skip.size()) == grey.rows && skip[y][1] > skip[y][0]) {
+      span_begin = std::max(1, skip[y][0]);
+      span_end = std::min(grey.cols - 1, skip[y][1]);
+    }
+    // The 3x3 Sobel x on the scanned columns (and one more each side, for the peak test).
+    const uchar* up = grey.ptr<uchar>(y - 1) + channel;
+    const uchar* mid = grey.ptr<uchar>(y) + channel;
+    const uchar* down = grey.ptr<uchar>(y + 1) + channel;
+    short* g = row.data();
+    const auto sobel = [&](int begin, int end) {
+      for (int x = std::max(1, begin); x < std::min(grey.cols - 1, end); ++x) {
+        const int r = stride * (x + 1), l = stride * (x - 1);
+        g[x] = static_cast<short>((up[r] - up[l]) + 2 * (mid[r] - mid[l]) + (down[r] - down[l]));
+      }
+    };
+    sobel(1, span_begin + 1);
+    sobel(span_end - 1, grey.cols - 1);
+    peaks.clear();
+    for (int x = 1; x < grey.cols - 1; ++x) {
+      if (x == span_begin) x = span_end;
+      if (x >= grey.cols - 1) break;
+      const int m = std::abs(g[x]);
+      if (m < threshold) continue;
+      const int l = std::abs(g[x - 1]), r = std::abs(g[x + 1]);
+      if (m < l || m <= r) continue;
+      const double curvature = l - 2.0 * m + r;
+      const double offset = curvature < 0 ? 0.5 * (l - r) / curvature : 0.0;
+      peaks.push_back({x + offset, g[x] > 0 ? 1 : -1});
+    }
+    // Each peak continues the nearest open chain of its sign within reach; each chain takes one.
+    taken.assign(open.size(), 0);
+    next_open.clear();
+    size_t lo = 0;
+    for (const Peak& p : peaks) {
+      while (lo < open.size() && chains[open[lo]].last_x < p.x - reach) ++lo;
+      int best = -1;
+      double best_d = reach;
+      for (size_t k = lo; k < open.size() && chains[open[k]].last_x <= p.x + reach; ++k) {
+        const Chain& c = chains[open[k]];
+        const double d = std::abs(c.last_x - p.x);
+        if (!taken[k] && c.sign == p.sign && d <= best_d) best_d = d, best = static_cast<int>(k);
+      }
+      if (best >= 0) {
+        taken[best] = 1;
+        chains[open[best]].Add(p.x, y);
+        next_open.push_back(open[best]);
+      } else {
+        Chain c;
+        c.first_row = y;
+        c.sign = p.sign;
+        c.Add(p.x, y);
+        chains.push_back(c);
+        next_open.push_back(static_cast<int>(chains.size()) - 1);
+      }
+    }
+    // Chains not continued stay open for one more scanned row, then close.
+    for (size_t k = 0; k < open.size(); ++k) {
+      if (taken[k]) continue;
+      const Chain& c = chains[open[k]];
+      if (y - c.last_row <= options.row_step) {
+        next_open.push_back(open[k]);
+      } else {
+        close(c);
+      }
+    }
+    std::sort(next_open.begin(), next_open.end(),
+              [&](int a, int b) { return chains[a].last_x < chains[b].last_x; });
+    open.swap(next_open);
+  }
+  for (int k : open) close(chains[k]);
+  return out;
+}
+
+}  // namespace corridor
