@@ -48,6 +48,12 @@ Eigen::Vector2d DownDirection(const MergedLine& line, const Eigen::Vector2d& vp)
   return (LowEnd(line) - vp).normalized();
 }
 
+// True when `outer` passes through the vanishing point and lies above (on the wall side of)
+// `low`, the lower end of the chosen line.
+bool LiesAbove(const MergedLine& outer, const Eigen::Vector2d& low, const Eigen::Vector2d& vp) {
+  return PassesThrough(outer, vp) && outer.line.dot(low.homogeneous()) > 0;
+}
+
 // A baseboard's top and bottom edges (the junction) meet the vanishing point within a few
 // degrees of each other in the image.
 constexpr double kBaseboardMaxAngleDeg = 6.0;
@@ -65,13 +71,18 @@ constexpr double kRecessMinBoundaryRatio = 0.4;
 // from it by at least min_angle and less than max_angle degrees) with at least `min_ratio` of its
 // boundary score: the one farthest below (`farthest`) or the nearest; -1 when there is none.
 int LineBelow(const std::vector<JunctionCandidate>& side, int chosen, const Eigen::Vector2d& vp,
-              bool left, double min_ratio, double min_angle, double max_angle, bool farthest) {
+              bool left, double min_ratio, double min_angle, double max_angle, bool farthest,
+              int floor_edge) {
   const Eigen::Vector2d d_chosen = DownDirection(side[chosen].line, vp);
   int best = -1;
   double best_angle = 0;
   for (size_t k = 0; k < side.size(); ++k) {
     if (static_cast<int>(k) == chosen || !PassesThrough(side[k].line, vp)) continue;
     if (side[k].boundary < min_ratio * side[chosen].boundary) continue;
+    if (floor_edge >= 0 && (static_cast<int>(k) == floor_edge ||
+                            !LiesAbove(side[k].line, LowEnd(side[floor_edge].line), vp))) {
+      continue;  // At or inside a known floor's edge.
+    }
     const Eigen::Vector2d d = DownDirection(side[k].line, vp);
     // Floor side: turned toward straight down, i.e. toward the image centre.
     const double cross = d_chosen.x() * d.y() - d_chosen.y() * d.x();
@@ -90,8 +101,9 @@ int LineBelow(const std::vector<JunctionCandidate>& side, int chosen, const Eige
 // line just below the chosen one (within kBaseboardMaxAngleDeg) with at least `min_ratio` of its
 // boundary score, the one farthest below; or -1.
 int LowerLine(const std::vector<JunctionCandidate>& side, int chosen, const Eigen::Vector2d& vp,
-              bool left, double min_ratio) {
-  return LineBelow(side, chosen, vp, left, min_ratio, 0.0, kBaseboardMaxAngleDeg, true);
+              bool left, double min_ratio, int floor_edge) {
+  return LineBelow(side, chosen, vp, left, min_ratio, 0.0, kBaseboardMaxAngleDeg, true,
+                   floor_edge);
 }
 
 // When the chosen line has a partner below it that looks at least nearly as much like the floor's
@@ -101,13 +113,14 @@ int LowerLine(const std::vector<JunctionCandidate>& side, int chosen, const Eige
 // at least kRecessMinBoundaryRatio of the score (the wall's junction when the chosen line is a
 // recess's).
 void ApplyBaseboardRule(const std::vector<JunctionCandidate>& side, const Eigen::Vector2d& vp,
-                        bool left, const BaseboardBandTest& band, int* chosen, int* lower) {
-  int partner = LowerLine(side, *chosen, vp, left, 0.8);
+                        bool left, const BaseboardBandTest& band, int floor_edge, int* chosen,
+                        int* lower) {
+  int partner = LowerLine(side, *chosen, vp, left, 0.8, floor_edge);
   if (partner < 0 && band.contrast) {
     // A baseboard as dark as the floor has a weak lower edge (and so a low boundary score), but
     // the band between its edges is unlike the floor; between a junction and a grout line, or
     // a glossy floor's faint reflection of the baseboard, the band is floor.
-    const int weak = LowerLine(side, *chosen, vp, left, band.min_boundary_ratio);
+    const int weak = LowerLine(side, *chosen, vp, left, band.min_boundary_ratio, floor_edge);
     if (weak >= 0 && band.contrast(side[*chosen].line, side[weak].line) >= band.min_contrast) {
       partner = weak;
     }
@@ -116,21 +129,15 @@ void ApplyBaseboardRule(const std::vector<JunctionCandidate>& side, const Eigen:
     *chosen = partner;
     return;
   }
-  *lower = LowerLine(side, *chosen, vp, left, 0.5);
+  *lower = LowerLine(side, *chosen, vp, left, 0.5, floor_edge);
   if (*lower < 0) {
     *lower = LineBelow(side, *chosen, vp, left, kRecessMinBoundaryRatio, kBaseboardMaxAngleDeg,
-                       kRecessMaxAngleDeg, false);
+                       kRecessMaxAngleDeg, false, floor_edge);
   }
 }
 
 // Lines above lines: a runner's edge, its border, a stripe; more is not a floor's pattern.
 constexpr int kMaxFloorSteps = 3;
-
-// True when `outer` passes through the vanishing point and lies above (on the wall side of)
-// `low`, the lower end of the chosen line.
-bool LiesAbove(const MergedLine& outer, const Eigen::Vector2d& low, const Eigen::Vector2d& vp) {
-  return PassesThrough(outer, vp) && outer.line.dot(low.homogeneous()) > 0;
-}
 
 // True when `band`'s edges say floor (see FloorBandTest).
 bool IsFloorBand(const BandEdges& band, const FloorBandTest& test) {
@@ -228,6 +235,41 @@ bool ApplyStripeRule(const Eigen::Vector2d& vp, const FloorBandTest& test,
   return false;
 }
 
+// The stripe rule from the floor rule's line: the floor rule found floor (tile joints, a carpet)
+// between a runner's edge and that line, so the floor just below it is the floor's own material.
+// A stripe or border laid beyond it has that material again beyond its far edge, where a thin
+// strip's joints are too few to count. The lines above are taken nearest first; the first with
+// that floor above it is the stripe's far edge, and the line after it the junction, when the band
+// up to the far edge is a stripe: the chosen line shows little floor above it (as the stripe
+// rule asks), or the band's middle is unlike the floor (`band.contrast`; a stripe thinner than
+// the colour probes' 4 px reach is seen there, not in the strip just above the line). The line
+// taken is scored, as the floor rule's, against the floor just below it.
+int ApplyStripeBeyondFloorBand(const Eigen::Vector2d& vp, const FloorBandTest& test,
+                               const BaseboardBandTest& band,
+                               std::vector<JunctionCandidate>* candidates, int* chosen,
+                               int* inner_index) {
+  if (*inner_index < 0) return -1;  // The floor rule did not move.
+  const std::vector<JunctionCandidate>& side = *candidates;
+  const FloorAppearance floor = test.floor_below(side[*chosen].line);
+  const MergedLine& inner = side[*chosen].line;
+  const std::vector<std::pair<long, int>>& above = LinesAboveNearestFirst(vp, test, side, *chosen);
+  for (size_t i = 0; i + 1 < above.size(); ++i) {
+    const MergedLine& far_edge = side[above[i].second].line;
+    if (test.floor_above(floor, far_edge) < test.stripe_min_beyond) continue;
+    const bool unlike_floor =
+        band.contrast && band.contrast(far_edge, inner) >= band.min_contrast;
+    if (!unlike_floor && test.floor_above(floor, inner) > test.stripe_max_inner) return -1;
+    int lower = -1;
+    TakeLineAbove(above[i + 1].second, chosen, inner_index, &lower);
+    if (test.boundary) {
+      double& boundary = (*candidates)[*chosen].boundary;
+      boundary = std::max(boundary, test.boundary(side[*chosen].line));
+    }
+    return above[i].second;
+  }
+  return -1;
+}
+
 // A line with the floor's colour on both sides lies inside the floor (a tile joint beside the
 // wall, a runner's or a shadow's edge): the nearest line above it bounds the floor.
 // `above_chosen`: the chosen line's likeness above it, against the floor just below it.
@@ -309,9 +351,21 @@ SelectedPair SelectJunctionPair(std::vector<JunctionCandidate>* left_candidates,
     ApplyFloorRule(best.vanishing_point, floor_band, right_candidates, &best.right,
                    &best.right_inner);
   }
+  // The far edges of stripes found beyond the floor rule's band: the baseboard rule does not
+  // step back to or inside them.
+  int left_floor_edge = -1, right_floor_edge = -1;
+  if (best.left >= 0 && floor_band.measure && floor_band.floor_below && floor_band.floor_above &&
+      floor_band.stripe_min_beyond > 0 && floor_band.stripe_beyond_floor_band) {
+    left_floor_edge = ApplyStripeBeyondFloorBand(best.vanishing_point, floor_band, band,
+                                                 left_candidates, &best.left, &best.left_inner);
+    right_floor_edge = ApplyStripeBeyondFloorBand(best.vanishing_point, floor_band, band,
+                                                  right_candidates, &best.right, &best.right_inner);
+  }
   if (best.left >= 0) {
-    ApplyBaseboardRule(left, best.vanishing_point, true, band, &best.left, &best.left_lower);
-    ApplyBaseboardRule(right, best.vanishing_point, false, band, &best.right, &best.right_lower);
+    ApplyBaseboardRule(left, best.vanishing_point, true, band, left_floor_edge, &best.left,
+                       &best.left_lower);
+    ApplyBaseboardRule(right, best.vanishing_point, false, band, right_floor_edge, &best.right,
+                       &best.right_lower);
   }
   if (best.left >= 0 && floor_band.measure && floor_band.floor_below && floor_band.floor_above) {
     ApplyFloorColourRules(best.vanishing_point, floor_band, left, &best.left, &best.left_inner,

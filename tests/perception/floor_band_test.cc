@@ -242,6 +242,20 @@ TEST(StripeRuleTest, TakesTheJunctionsBeyondAFloorStripe) {
   ExpectTheRuleTakesTheJunctions("floor", {{8, 2}, {8, 3}, {9, 3}}, without, 20.0, 3.0);
 }
 
+// A magenta runner with a tiled margin and a dark stripe beside it (scene 2; scene 9 has the
+// stripe and a margin without joints on one side): the floor rule steps from the runner's edge
+// over the tiled margin to the stripe's near edge, but the tiles beyond the stripe show too few
+// joints, and the floor just below the runner's edge (magenta) is not the tiles' colour, so the
+// stripe rule from the runner's edge finds nothing. From the floor rule's line, with the margin's
+// own tiles as the floor, the stripe's far edge has floor beyond it and the next line above is the
+// junction; the baseboard rule no longer steps back inside the stripe.
+TEST(StripeRuleTest, TakesTheJunctionsBeyondAStripeBesideATiledMargin) {
+  JunctionDetectorOptions without;
+  without.stripe_floor_likeness = 0;
+  ExpectTheRuleTakesTheJunctions("floor", {{2, 0}, {2, 5}, {2, 8}, {2, 12}, {2, 16}, {9, 4}},
+                                 without, 20.0, 3.0);
+}
+
 // An option that must lie in [0, 1]: a value outside is rejected, and the reason names it.
 void ExpectOutsideZeroToOneRejected(double JunctionDetectorOptions::*option, const char* name) {
   for (const double value : {-0.1, 1.5}) {
