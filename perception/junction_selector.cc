@@ -236,21 +236,20 @@ bool ApplyStripeRule(const Eigen::Vector2d& vp, const FloorBandTest& test,
 }
 
 // The stripe rule from the floor rule's line: the floor rule found floor (tile joints, a carpet)
-// between a runner's edge and that line, so the floor just below it is the floor's own material.
-// A stripe or border laid beyond it has that material again beyond its far edge, where a thin
-// strip's joints are too few to count. The lines above are taken nearest first; the first with
-// that floor above it is the stripe's far edge, and the line after it the junction, when the band
-// up to the far edge is a stripe: the chosen line shows little floor above it (as the stripe
-// rule asks), or the band's middle is unlike the floor (`band.contrast`; a stripe thinner than
-// the colour probes' 4 px reach is seen there, not in the strip just above the line). The line
-// taken is scored, as the floor rule's, against the floor just below it.
+// between a runner's edge and that line, so `floor`, the floor just below that line, is the
+// floor's own material. A stripe or border laid beyond it has that material again beyond its far
+// edge, where a thin strip's joints are too few to count. The lines above the chosen one are taken
+// nearest first; the first with that floor above it is the stripe's far edge, and the line after
+// it the junction, when the band up to the far edge is a stripe: the chosen line shows little
+// floor above it (as the stripe rule asks), or the band's middle is unlike the floor just below
+// the chosen line (`band.contrast`; a stripe thinner than the colour probes' 4 px reach is seen
+// there, not in the strip just above the line). The line taken is scored, as the floor rule's,
+// against the floor just below it. Returns the far edge, or -1 when no line was taken.
 int ApplyStripeBeyondFloorBand(const Eigen::Vector2d& vp, const FloorBandTest& test,
-                               const BaseboardBandTest& band,
+                               const BaseboardBandTest& band, const FloorAppearance& floor,
                                std::vector<JunctionCandidate>* candidates, int* chosen,
                                int* inner_index) {
-  if (*inner_index < 0) return -1;  // The floor rule did not move.
   const std::vector<JunctionCandidate>& side = *candidates;
-  const FloorAppearance floor = test.floor_below(side[*chosen].line);
   const MergedLine& inner = side[*chosen].line;
   const std::vector<std::pair<long, int>>& above = LinesAboveNearestFirst(vp, test, side, *chosen);
   for (size_t i = 0; i + 1 < above.size(); ++i) {
@@ -268,6 +267,41 @@ int ApplyStripeBeyondFloorBand(const Eigen::Vector2d& vp, const FloorBandTest& t
     return above[i].second;
   }
   return -1;
+}
+
+// How much `colour` looks like `floor`, in [0, 1] (BoundaryScore's floor-likeness: a Gaussian of
+// the Lab distance as wide as the floor's texture allows).
+double ColourLikeness(const FloorAppearance& colour, const FloorAppearance& floor) {
+  const double sigma = std::max(6.0, 3.0 * floor.spread);
+  const double d = LabDistance(colour.lab, floor.lab);
+  return std::exp(-d * d / (2 * sigma * sigma));
+}
+
+// The stripe rule beyond the floor rule's band, per side (ApplyStripeBeyondFloorBand). When the
+// floor rule moved on one side only, and the other side's chosen line has the same floor below
+// it as the line the floor rule moved from (the two edges of one runner), the other side's margin
+// is taken to be of the same material as the first's (a runner laid down the middle of one floor)
+// and the stripe rule runs there too with the first side's margin colour. The far edges, or -1,
+// into *edge (left, right).
+void ApplyStripeRulesBeyondFloorBands(const Eigen::Vector2d& vp, const FloorBandTest& test,
+                                      const BaseboardBandTest& band,
+                                      std::vector<JunctionCandidate>* sides[2], int* chosen[2],
+                                      int* inner[2], int edge[2]) {
+  FloorAppearance margin[2];
+  int runner_edge[2] = {-1, -1};
+  for (int s = 0; s < 2; ++s) {
+    edge[s] = -1;
+    if (*inner[s] < 0) continue;  // The floor rule did not move.
+    runner_edge[s] = *inner[s];
+    margin[s] = test.floor_below((*sides[s])[*chosen[s]].line);
+    edge[s] = ApplyStripeBeyondFloorBand(vp, test, band, margin[s], sides[s], chosen[s], inner[s]);
+  }
+  if (!test.runner_other_side || (runner_edge[0] < 0) == (runner_edge[1] < 0)) return;
+  const int s = runner_edge[0] >= 0 ? 0 : 1, o = 1 - s;
+  const FloorAppearance runner = test.floor_below((*sides[s])[runner_edge[s]].line);
+  const FloorAppearance other = test.floor_below((*sides[o])[*chosen[o]].line);
+  if (ColourLikeness(other, runner) < test.stripe_min_beyond) return;
+  edge[o] = ApplyStripeBeyondFloorBand(vp, test, band, margin[s], sides[o], chosen[o], inner[o]);
 }
 
 // A line with the floor's colour on both sides lies inside the floor (a tile joint beside the
@@ -353,18 +387,19 @@ SelectedPair SelectJunctionPair(std::vector<JunctionCandidate>* left_candidates,
   }
   // The far edges of stripes found beyond the floor rule's band: the baseboard rule does not
   // step back to or inside them.
-  int left_floor_edge = -1, right_floor_edge = -1;
+  int floor_edge[2] = {-1, -1};
   if (best.left >= 0 && floor_band.measure && floor_band.floor_below && floor_band.floor_above &&
       floor_band.stripe_min_beyond > 0 && floor_band.stripe_beyond_floor_band) {
-    left_floor_edge = ApplyStripeBeyondFloorBand(best.vanishing_point, floor_band, band,
-                                                 left_candidates, &best.left, &best.left_inner);
-    right_floor_edge = ApplyStripeBeyondFloorBand(best.vanishing_point, floor_band, band,
-                                                  right_candidates, &best.right, &best.right_inner);
+    std::vector<JunctionCandidate>* sides[2] = {left_candidates, right_candidates};
+    int* chosen[2] = {&best.left, &best.right};
+    int* inner[2] = {&best.left_inner, &best.right_inner};
+    ApplyStripeRulesBeyondFloorBands(best.vanishing_point, floor_band, band, sides, chosen, inner,
+                                     floor_edge);
   }
   if (best.left >= 0) {
-    ApplyBaseboardRule(left, best.vanishing_point, true, band, left_floor_edge, &best.left,
+    ApplyBaseboardRule(left, best.vanishing_point, true, band, floor_edge[0], &best.left,
                        &best.left_lower);
-    ApplyBaseboardRule(right, best.vanishing_point, false, band, right_floor_edge, &best.right,
+    ApplyBaseboardRule(right, best.vanishing_point, false, band, floor_edge[1], &best.right,
                        &best.right_lower);
   }
   if (best.left >= 0 && floor_band.measure && floor_band.floor_below && floor_band.floor_above) {

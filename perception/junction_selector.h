@@ -73,6 +73,9 @@ struct FloorBandTest {
   // The stripe rule also runs from the floor rule's line, right after the floor rule moved, with
   // the floor just below that line (the floor band's own material, not the runner's).
   bool stripe_beyond_floor_band = true;
+  // ... and, when the floor rule moved on one side only, on the other side from a line with the
+  // same floor below it (a runner's other edge), with the first side's floor band colour.
+  bool runner_other_side = true;
   double stripe_max_inner = 0.35;  // The chosen line shows at most this much floor above it...
   double stripe_min_beyond = 0.7;  // ... and a line above it at least this much: the floor goes
                                    // on beyond that line, and the next line above bounds it.

@@ -256,6 +256,16 @@ TEST(StripeRuleTest, TakesTheJunctionsBeyondAStripeBesideATiledMargin) {
                                  without, 20.0, 3.0);
 }
 
+// The same runner where only one side's margin shows joints enough for the floor rule (scene 2
+// frames 1 and 4, scene 9 frame 9): the other side's margin is taken to be of the same material
+// (its line has the runner below it, as the line the floor rule moved from), and the stripe rule
+// runs there with the first side's margin colour.
+TEST(StripeRuleTest, TakesTheRunnersOtherSideBeyondItsStripe) {
+  JunctionDetectorOptions without;
+  without.stripe_floor_likeness = 0;
+  ExpectTheRuleTakesTheJunctions("floor", {{2, 1}, {2, 4}, {9, 9}}, without, 20.0, 3.0);
+}
+
 // An option that must lie in [0, 1]: a value outside is rejected, and the reason names it.
 void ExpectOutsideZeroToOneRejected(double JunctionDetectorOptions::*option, const char* name) {
   for (const double value : {-0.1, 1.5}) {
