@@ -235,6 +235,18 @@ bool ApplyStripeRule(const Eigen::Vector2d& vp, const FloorBandTest& test,
   return false;
 }
 
+// A stripe thinner than the colour probes' reach: the strip just above its near edge is partly
+// the floor beyond it, but at most half floor.
+constexpr double kThinStripeMaxInner = 0.5;
+
+// How much `colour` looks like `floor`, in [0, 1] (BoundaryScore's floor-likeness: a Gaussian of
+// the Lab distance as wide as the floor's texture allows).
+double ColourLikeness(const FloorAppearance& colour, const FloorAppearance& floor) {
+  const double sigma = std::max(6.0, 3.0 * floor.spread);
+  const double d = LabDistance(colour.lab, floor.lab);
+  return std::exp(-d * d / (2 * sigma * sigma));
+}
+
 // The stripe rule from the floor rule's line: the floor rule found floor (tile joints, a carpet)
 // between a runner's edge and that line, so `floor`, the floor just below that line, is the
 // floor's own material. A stripe or border laid beyond it has that material again beyond its far
@@ -243,10 +255,15 @@ bool ApplyStripeRule(const Eigen::Vector2d& vp, const FloorBandTest& test,
 // it the junction, when the band up to the far edge is a stripe: the chosen line shows little
 // floor above it (as the stripe rule asks), or the band's middle is unlike the floor just below
 // the chosen line (`band.contrast`; a stripe thinner than the colour probes' 4 px reach is seen
-// there, not in the strip just above the line). The line taken is scored, as the floor rule's,
-// against the floor just below it. Returns the far edge, or -1 when no line was taken.
+// there, not in the strip just above the line, which is then partly the floor beyond it, but not
+// more than half: kThinStripeMaxInner). The line taken is scored, as the floor rule's,
+// against the floor just below it. `stripe_below_far_edge`: the far edge must also have no more
+// of that floor just below it than the stripe rule allows above the chosen line (a line with the
+// floor's material on both sides is no stripe's edge), where the margin's material is assumed,
+// not seen. Returns the far edge, or -1 when no line was taken.
 int ApplyStripeBeyondFloorBand(const Eigen::Vector2d& vp, const FloorBandTest& test,
                                const BaseboardBandTest& band, const FloorAppearance& floor,
+                               bool stripe_below_far_edge,
                                std::vector<JunctionCandidate>* candidates, int* chosen,
                                int* inner_index) {
   const std::vector<JunctionCandidate>& side = *candidates;
@@ -255,9 +272,14 @@ int ApplyStripeBeyondFloorBand(const Eigen::Vector2d& vp, const FloorBandTest& t
   for (size_t i = 0; i + 1 < above.size(); ++i) {
     const MergedLine& far_edge = side[above[i].second].line;
     if (test.floor_above(floor, far_edge) < test.stripe_min_beyond) continue;
-    const bool unlike_floor =
-        band.contrast && band.contrast(far_edge, inner) >= band.min_contrast;
-    if (!unlike_floor && test.floor_above(floor, inner) > test.stripe_max_inner) return -1;
+    const double above_inner = test.floor_above(floor, inner);
+    const bool unlike_floor = above_inner <= kThinStripeMaxInner && band.contrast &&
+                              band.contrast(far_edge, inner) >= band.min_contrast;
+    if (!unlike_floor && above_inner > test.stripe_max_inner) return -1;
+    if (stripe_below_far_edge &&
+        ColourLikeness(test.floor_below(far_edge), floor) > test.stripe_max_inner) {
+      return -1;
+    }
     int lower = -1;
     TakeLineAbove(above[i + 1].second, chosen, inner_index, &lower);
     if (test.boundary) {
@@ -269,19 +291,12 @@ int ApplyStripeBeyondFloorBand(const Eigen::Vector2d& vp, const FloorBandTest& t
   return -1;
 }
 
-// How much `colour` looks like `floor`, in [0, 1] (BoundaryScore's floor-likeness: a Gaussian of
-// the Lab distance as wide as the floor's texture allows).
-double ColourLikeness(const FloorAppearance& colour, const FloorAppearance& floor) {
-  const double sigma = std::max(6.0, 3.0 * floor.spread);
-  const double d = LabDistance(colour.lab, floor.lab);
-  return std::exp(-d * d / (2 * sigma * sigma));
-}
-
 // The stripe rule beyond the floor rule's band, per side (ApplyStripeBeyondFloorBand). When the
 // floor rule moved on one side only, and the other side's chosen line has the same floor below
 // it as the line the floor rule moved from (the two edges of one runner), the other side's margin
 // is taken to be of the same material as the first's (a runner laid down the middle of one floor)
-// and the stripe rule runs there too with the first side's margin colour. The far edges, or -1,
+// and the stripe rule runs there too with the first side's margin colour; there the far edge
+// must have the stripe, not that colour, just below it. The far edges, or -1,
 // into *edge (left, right).
 void ApplyStripeRulesBeyondFloorBands(const Eigen::Vector2d& vp, const FloorBandTest& test,
                                       const BaseboardBandTest& band,
@@ -294,14 +309,16 @@ void ApplyStripeRulesBeyondFloorBands(const Eigen::Vector2d& vp, const FloorBand
     if (*inner[s] < 0) continue;  // The floor rule did not move.
     runner_edge[s] = *inner[s];
     margin[s] = test.floor_below((*sides[s])[*chosen[s]].line);
-    edge[s] = ApplyStripeBeyondFloorBand(vp, test, band, margin[s], sides[s], chosen[s], inner[s]);
+    edge[s] = ApplyStripeBeyondFloorBand(vp, test, band, margin[s], false, sides[s], chosen[s],
+                                         inner[s]);
   }
   if (!test.runner_other_side || (runner_edge[0] < 0) == (runner_edge[1] < 0)) return;
   const int s = runner_edge[0] >= 0 ? 0 : 1, o = 1 - s;
   const FloorAppearance runner = test.floor_below((*sides[s])[runner_edge[s]].line);
   const FloorAppearance other = test.floor_below((*sides[o])[*chosen[o]].line);
   if (ColourLikeness(other, runner) < test.stripe_min_beyond) return;
-  edge[o] = ApplyStripeBeyondFloorBand(vp, test, band, margin[s], sides[o], chosen[o], inner[o]);
+  edge[o] = ApplyStripeBeyondFloorBand(vp, test, band, margin[s], true, sides[o], chosen[o],
+                                       inner[o]);
 }
 
 // A line with the floor's colour on both sides lies inside the floor (a tile joint beside the
