@@ -257,10 +257,11 @@ double ColourLikeness(const FloorAppearance& colour, const FloorAppearance& floo
 // the chosen line (`band.contrast`; a stripe thinner than the colour probes' 4 px reach is seen
 // there, not in the strip just above the line, which is then partly the floor beyond it, but not
 // more than half: kThinStripeMaxInner). The line taken is scored, as the floor rule's,
-// against the floor just below it. `stripe_below_far_edge`: the far edge must also have no more
-// of that floor just below it than the stripe rule allows above the chosen line (a line with the
-// floor's material on both sides is no stripe's edge), where the margin's material is assumed,
-// not seen. Returns the far edge, or -1 when no line was taken.
+// against the floor just below it. `stripe_below_far_edge` (a runner's other edge, known to lie
+// inside the floor, with the margin's material assumed, not seen): instead of the tests on the
+// chosen line, the far edge must have no more of that floor just below it than the stripe rule
+// allows above the chosen line (a line with the floor's material on both sides is no stripe's
+// edge). Returns the far edge, or -1 when no line was taken.
 int ApplyStripeBeyondFloorBand(const Eigen::Vector2d& vp, const FloorBandTest& test,
                                const BaseboardBandTest& band, const FloorAppearance& floor,
                                bool stripe_below_far_edge,
@@ -272,13 +273,13 @@ int ApplyStripeBeyondFloorBand(const Eigen::Vector2d& vp, const FloorBandTest& t
   for (size_t i = 0; i + 1 < above.size(); ++i) {
     const MergedLine& far_edge = side[above[i].second].line;
     if (test.floor_above(floor, far_edge) < test.stripe_min_beyond) continue;
-    const double above_inner = test.floor_above(floor, inner);
-    const bool unlike_floor = above_inner <= kThinStripeMaxInner && band.contrast &&
-                              band.contrast(far_edge, inner) >= band.min_contrast;
-    if (!unlike_floor && above_inner > test.stripe_max_inner) return -1;
-    if (stripe_below_far_edge &&
-        ColourLikeness(test.floor_below(far_edge), floor) > test.stripe_max_inner) {
-      return -1;
+    if (stripe_below_far_edge) {
+      if (ColourLikeness(test.floor_below(far_edge), floor) > test.stripe_max_inner) return -1;
+    } else {
+      const double above_inner = test.floor_above(floor, inner);
+      const bool unlike_floor = above_inner <= kThinStripeMaxInner && band.contrast &&
+                                band.contrast(far_edge, inner) >= band.min_contrast;
+      if (!unlike_floor && above_inner > test.stripe_max_inner) return -1;
     }
     int lower = -1;
     TakeLineAbove(above[i + 1].second, chosen, inner_index, &lower);
@@ -296,7 +297,8 @@ int ApplyStripeBeyondFloorBand(const Eigen::Vector2d& vp, const FloorBandTest& t
 // it as the line the floor rule moved from (the two edges of one runner), the other side's margin
 // is taken to be of the same material as the first's (a runner laid down the middle of one floor)
 // and the stripe rule runs there too with the first side's margin colour; there the far edge
-// must have the stripe, not that colour, just below it. The far edges, or -1,
+// must have the stripe, not that colour, just below it, and the chosen line (the runner's edge)
+// is not tested. The far edges, or -1,
 // into *edge (left, right).
 void ApplyStripeRulesBeyondFloorBands(const Eigen::Vector2d& vp, const FloorBandTest& test,
                                       const BaseboardBandTest& band,

@@ -257,13 +257,13 @@ TEST(StripeRuleTest, TakesTheJunctionsBeyondAStripeBesideATiledMargin) {
 }
 
 // The same runner where only one side's margin shows joints enough for the floor rule (scene 2
-// frames 1 and 4): the other side's margin is taken to be of the same material (its line has the
-// runner below it, as the line the floor rule moved from), and the stripe rule runs there with
-// the first side's margin colour.
+// frames 1 and 4, scene 9 frames 9 and 15): the other side's margin is taken to be of the same
+// material (its line has the runner below it, as the line the floor rule moved from), and the
+// stripe rule runs there with the first side's margin colour.
 TEST(StripeRuleTest, TakesTheRunnersOtherSideBeyondItsStripe) {
   JunctionDetectorOptions without;
   without.stripe_floor_likeness = 0;
-  ExpectTheRuleTakesTheJunctions("floor", {{2, 1}, {2, 4}}, without, 20.0, 3.0);
+  ExpectTheRuleTakesTheJunctions("floor", {{2, 1}, {2, 4}, {9, 9}, {9, 15}}, without, 20.0, 3.0);
 }
 
 // Where the floor rule's line is the junction itself, a baseboard above it and a wall of the
