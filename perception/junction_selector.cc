@@ -256,8 +256,8 @@ double ColourLikeness(const FloorAppearance& colour, const FloorAppearance& floo
 // floor above it (as the stripe rule asks), or the band's middle is unlike the floor just below
 // the chosen line (`band.contrast`; a stripe thinner than the colour probes' 4 px reach is seen
 // there, not in the strip just above the line, which is then partly the floor beyond it, but not
-// more than half: kThinStripeMaxInner). The line taken is scored, as the floor rule's,
-// against the floor just below it. `stripe_below_far_edge` (a runner's other edge, known to lie
+// more than half: kThinStripeMaxInner). The line taken is scored, as the floor rule's, against
+// the floor just below it. `stripe_below_far_edge` (a runner's other edge, known to lie
 // inside the floor, with the margin's material assumed, not seen): instead of the tests on the
 // chosen line, the far edge must have no more of that floor just below it than the stripe rule
 // allows above the chosen line (a line with the floor's material on both sides is no stripe's
@@ -298,8 +298,7 @@ int ApplyStripeBeyondFloorBand(const Eigen::Vector2d& vp, const FloorBandTest& t
 // is taken to be of the same material as the first's (a runner laid down the middle of one floor)
 // and the stripe rule runs there too with the first side's margin colour; there the far edge
 // must have the stripe, not that colour, just below it, and the chosen line (the runner's edge)
-// is not tested. The far edges, or -1,
-// into *edge (left, right).
+// is not tested. The far edges, or -1, into *edge (left, right).
 void ApplyStripeRulesBeyondFloorBands(const Eigen::Vector2d& vp, const FloorBandTest& test,
                                       const BaseboardBandTest& band,
                                       std::vector<JunctionCandidate>* sides[2], int* chosen[2],
