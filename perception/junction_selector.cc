@@ -48,6 +48,12 @@ Eigen::Vector2d DownDirection(const MergedLine& line, const Eigen::Vector2d& vp)
   return (LowEnd(line) - vp).normalized();
 }
 
+// True when `outer` passes through the vanishing point and lies above (on the wall side of)
+// `low`, the lower end of the chosen line.
+bool LiesAbove(const MergedLine& outer, const Eigen::Vector2d& low, const Eigen::Vector2d& vp) {
+  return PassesThrough(outer, vp) && outer.line.dot(low.homogeneous()) > 0;
+}
+
 // A baseboard's top and bottom edges (the junction) meet the vanishing point within a few
 // degrees of each other in the image.
 constexpr double kBaseboardMaxAngleDeg = 6.0;
@@ -65,13 +71,18 @@ constexpr double kRecessMinBoundaryRatio = 0.4;
 // from it by at least min_angle and less than max_angle degrees) with at least `min_ratio` of its
 // boundary score: the one farthest below (`farthest`) or the nearest; -1 when there is none.
 int LineBelow(const std::vector<JunctionCandidate>& side, int chosen, const Eigen::Vector2d& vp,
-              bool left, double min_ratio, double min_angle, double max_angle, bool farthest) {
+              bool left, double min_ratio, double min_angle, double max_angle, bool farthest,
+              int floor_edge) {
   const Eigen::Vector2d d_chosen = DownDirection(side[chosen].line, vp);
   int best = -1;
   double best_angle = 0;
   for (size_t k = 0; k < side.size(); ++k) {
     if (static_cast<int>(k) == chosen || !PassesThrough(side[k].line, vp)) continue;
     if (side[k].boundary < min_ratio * side[chosen].boundary) continue;
+    if (floor_edge >= 0 && (static_cast<int>(k) == floor_edge ||
+                            !LiesAbove(side[k].line, LowEnd(side[floor_edge].line), vp))) {
+      continue;  // At or inside a known floor's edge.
+    }
     const Eigen::Vector2d d = DownDirection(side[k].line, vp);
     // Floor side: turned toward straight down, i.e. toward the image centre.
     const double cross = d_chosen.x() * d.y() - d_chosen.y() * d.x();
@@ -90,8 +101,9 @@ int LineBelow(const std::vector<JunctionCandidate>& side, int chosen, const Eige
 // line just below the chosen one (within kBaseboardMaxAngleDeg) with at least `min_ratio` of its
 // boundary score, the one farthest below; or -1.
 int LowerLine(const std::vector<JunctionCandidate>& side, int chosen, const Eigen::Vector2d& vp,
-              bool left, double min_ratio) {
-  return LineBelow(side, chosen, vp, left, min_ratio, 0.0, kBaseboardMaxAngleDeg, true);
+              bool left, double min_ratio, int floor_edge) {
+  return LineBelow(side, chosen, vp, left, min_ratio, 0.0, kBaseboardMaxAngleDeg, true,
+                   floor_edge);
 }
 
 // When the chosen line has a partner below it that looks at least nearly as much like the floor's
@@ -101,13 +113,14 @@ int LowerLine(const std::vector<JunctionCandidate>& side, int chosen, const Eige
 // at least kRecessMinBoundaryRatio of the score (the wall's junction when the chosen line is a
 // recess's).
 void ApplyBaseboardRule(const std::vector<JunctionCandidate>& side, const Eigen::Vector2d& vp,
-                        bool left, const BaseboardBandTest& band, int* chosen, int* lower) {
-  int partner = LowerLine(side, *chosen, vp, left, 0.8);
+                        bool left, const BaseboardBandTest& band, int floor_edge, int* chosen,
+                        int* lower) {
+  int partner = LowerLine(side, *chosen, vp, left, 0.8, floor_edge);
   if (partner < 0 && band.contrast) {
     // A baseboard as dark as the floor has a weak lower edge (and so a low boundary score), but
     // the band between its edges is unlike the floor; between a junction and a grout line, or
     // a glossy floor's faint reflection of the baseboard, the band is floor.
-    const int weak = LowerLine(side, *chosen, vp, left, band.min_boundary_ratio);
+    const int weak = LowerLine(side, *chosen, vp, left, band.min_boundary_ratio, floor_edge);
     if (weak >= 0 && band.contrast(side[*chosen].line, side[weak].line) >= band.min_contrast) {
       partner = weak;
     }
@@ -116,21 +129,15 @@ void ApplyBaseboardRule(const std::vector<JunctionCandidate>& side, const Eigen:
     *chosen = partner;
     return;
   }
-  *lower = LowerLine(side, *chosen, vp, left, 0.5);
+  *lower = LowerLine(side, *chosen, vp, left, 0.5, floor_edge);
   if (*lower < 0) {
     *lower = LineBelow(side, *chosen, vp, left, kRecessMinBoundaryRatio, kBaseboardMaxAngleDeg,
-                       kRecessMaxAngleDeg, false);
+                       kRecessMaxAngleDeg, false, floor_edge);
   }
 }
 
 // Lines above lines: a runner's edge, its border, a stripe; more is not a floor's pattern.
 constexpr int kMaxFloorSteps = 3;
-
-// True when `outer` passes through the vanishing point and lies above (on the wall side of)
-// `low`, the lower end of the chosen line.
-bool LiesAbove(const MergedLine& outer, const Eigen::Vector2d& low, const Eigen::Vector2d& vp) {
-  return PassesThrough(outer, vp) && outer.line.dot(low.homogeneous()) > 0;
-}
 
 // True when `band`'s edges say floor (see FloorBandTest).
 bool IsFloorBand(const BandEdges& band, const FloorBandTest& test) {
@@ -228,6 +235,93 @@ bool ApplyStripeRule(const Eigen::Vector2d& vp, const FloorBandTest& test,
   return false;
 }
 
+// A stripe thinner than the colour probes' reach: the strip just above its near edge is partly
+// the floor beyond it, but at most half floor.
+constexpr double kThinStripeMaxInner = 0.5;
+
+// How much `colour` looks like `floor`, in [0, 1] (BoundaryScore's floor-likeness: a Gaussian of
+// the Lab distance as wide as the floor's texture allows).
+double ColourLikeness(const FloorAppearance& colour, const FloorAppearance& floor) {
+  const double sigma = std::max(6.0, 3.0 * floor.spread);
+  const double d = LabDistance(colour.lab, floor.lab);
+  return std::exp(-d * d / (2 * sigma * sigma));
+}
+
+// The stripe rule from the floor rule's line: the floor rule found floor (tile joints, a carpet)
+// between a runner's edge and that line, so `floor`, the floor just below that line, is the
+// floor's own material. A stripe or border laid beyond it has that material again beyond its far
+// edge, where a thin strip's joints are too few to count. The lines above the chosen one are taken
+// nearest first; the first with that floor above it is the stripe's far edge, and the line after
+// it the junction, when the band up to the far edge is a stripe: the chosen line shows little
+// floor above it (as the stripe rule asks), or the band's middle is unlike the floor just below
+// the chosen line (`band.contrast`; a stripe thinner than the colour probes' 4 px reach is seen
+// there, not in the strip just above the line, which is then partly the floor beyond it, but not
+// more than half: kThinStripeMaxInner). The line taken is scored, as the floor rule's, against
+// the floor just below it. `stripe_below_far_edge` (a runner's other edge, known to lie
+// inside the floor, with the margin's material assumed, not seen): instead of the tests on the
+// chosen line, the far edge must have no more of that floor just below it than the stripe rule
+// allows above the chosen line (a line with the floor's material on both sides is no stripe's
+// edge). Returns the far edge, or -1 when no line was taken.
+int ApplyStripeBeyondFloorBand(const Eigen::Vector2d& vp, const FloorBandTest& test,
+                               const BaseboardBandTest& band, const FloorAppearance& floor,
+                               bool stripe_below_far_edge,
+                               std::vector<JunctionCandidate>* candidates, int* chosen,
+                               int* inner_index) {
+  const std::vector<JunctionCandidate>& side = *candidates;
+  const MergedLine& inner = side[*chosen].line;
+  const std::vector<std::pair<long, int>>& above = LinesAboveNearestFirst(vp, test, side, *chosen);
+  for (size_t i = 0; i + 1 < above.size(); ++i) {
+    const MergedLine& far_edge = side[above[i].second].line;
+    if (test.floor_above(floor, far_edge) < test.stripe_min_beyond) continue;
+    if (stripe_below_far_edge) {
+      if (ColourLikeness(test.floor_below(far_edge), floor) > test.stripe_max_inner) return -1;
+    } else {
+      const double above_inner = test.floor_above(floor, inner);
+      const bool unlike_floor = above_inner <= kThinStripeMaxInner && band.contrast &&
+                                band.contrast(far_edge, inner) >= band.min_contrast;
+      if (!unlike_floor && above_inner > test.stripe_max_inner) return -1;
+    }
+    int lower = -1;
+    TakeLineAbove(above[i + 1].second, chosen, inner_index, &lower);
+    if (test.boundary) {
+      double& boundary = (*candidates)[*chosen].boundary;
+      boundary = std::max(boundary, test.boundary(side[*chosen].line));
+    }
+    return above[i].second;
+  }
+  return -1;
+}
+
+// The stripe rule beyond the floor rule's band, per side (ApplyStripeBeyondFloorBand). When the
+// floor rule moved on one side only, and the other side's chosen line has the same floor below
+// it as the line the floor rule moved from (the two edges of one runner), the other side's margin
+// is taken to be of the same material as the first's (a runner laid down the middle of one floor)
+// and the stripe rule runs there too with the first side's margin colour; there the far edge
+// must have the stripe, not that colour, just below it, and the chosen line (the runner's edge)
+// is not tested. The far edges, or -1, into *edge (left, right).
+void ApplyStripeRulesBeyondFloorBands(const Eigen::Vector2d& vp, const FloorBandTest& test,
+                                      const BaseboardBandTest& band,
+                                      std::vector<JunctionCandidate>* sides[2], int* chosen[2],
+                                      int* inner[2], int edge[2]) {
+  FloorAppearance margin[2];
+  int runner_edge[2] = {-1, -1};
+  for (int s = 0; s < 2; ++s) {
+    edge[s] = -1;
+    if (*inner[s] < 0) continue;  // The floor rule did not move.
+    runner_edge[s] = *inner[s];
+    margin[s] = test.floor_below((*sides[s])[*chosen[s]].line);
+    edge[s] = ApplyStripeBeyondFloorBand(vp, test, band, margin[s], false, sides[s], chosen[s],
+                                         inner[s]);
+  }
+  if (!test.runner_other_side || (runner_edge[0] < 0) == (runner_edge[1] < 0)) return;
+  const int s = runner_edge[0] >= 0 ? 0 : 1, o = 1 - s;
+  const FloorAppearance runner = test.floor_below((*sides[s])[runner_edge[s]].line);
+  const FloorAppearance other = test.floor_below((*sides[o])[*chosen[o]].line);
+  if (ColourLikeness(other, runner) < test.stripe_min_beyond) return;
+  edge[o] = ApplyStripeBeyondFloorBand(vp, test, band, margin[s], true, sides[o], chosen[o],
+                                       inner[o]);
+}
+
 // A line with the floor's colour on both sides lies inside the floor (a tile joint beside the
 // wall, a runner's or a shadow's edge): the nearest line above it bounds the floor.
 // `above_chosen`: the chosen line's likeness above it, against the floor just below it.
@@ -309,9 +403,22 @@ SelectedPair SelectJunctionPair(std::vector<JunctionCandidate>* left_candidates,
     ApplyFloorRule(best.vanishing_point, floor_band, right_candidates, &best.right,
                    &best.right_inner);
   }
+  // The far edges of stripes found beyond the floor rule's band: the baseboard rule does not
+  // step back to or inside them.
+  int floor_edge[2] = {-1, -1};
+  if (best.left >= 0 && floor_band.measure && floor_band.floor_below && floor_band.floor_above &&
+      floor_band.stripe_min_beyond > 0 && floor_band.stripe_beyond_floor_band) {
+    std::vector<JunctionCandidate>* sides[2] = {left_candidates, right_candidates};
+    int* chosen[2] = {&best.left, &best.right};
+    int* inner[2] = {&best.left_inner, &best.right_inner};
+    ApplyStripeRulesBeyondFloorBands(best.vanishing_point, floor_band, band, sides, chosen, inner,
+                                     floor_edge);
+  }
   if (best.left >= 0) {
-    ApplyBaseboardRule(left, best.vanishing_point, true, band, &best.left, &best.left_lower);
-    ApplyBaseboardRule(right, best.vanishing_point, false, band, &best.right, &best.right_lower);
+    ApplyBaseboardRule(left, best.vanishing_point, true, band, floor_edge[0], &best.left,
+                       &best.left_lower);
+    ApplyBaseboardRule(right, best.vanishing_point, false, band, floor_edge[1], &best.right,
+                       &best.right_lower);
   }
   if (best.left >= 0 && floor_band.measure && floor_band.floor_below && floor_band.floor_above) {
     ApplyFloorColourRules(best.vanishing_point, floor_band, left, &best.left, &best.left_inner,

@@ -70,6 +70,12 @@ struct FloorBandTest {
   // has wall.
   std::function<FloorAppearance(const MergedLine& line)> floor_below;
   std::function<double(const FloorAppearance& floor, const MergedLine& line)> floor_above;
+  // The stripe rule also runs from the floor rule's line, right after the floor rule moved, with
+  // the floor just below that line (the floor band's own material, not the runner's).
+  bool stripe_beyond_floor_band = true;
+  // ... and, when the floor rule moved on one side only, on the other side from a line with the
+  // same floor below it (a runner's other edge), with the first side's floor band colour.
+  bool runner_other_side = true;
   double stripe_max_inner = 0.35;  // The chosen line shows at most this much floor above it...
   double stripe_min_beyond = 0.7;  // ... and a line above it at least this much: the floor goes
                                    // on beyond that line, and the next line above bounds it.
@@ -86,7 +92,10 @@ struct FloorBandTest {
 // its boundary score nearly matches the chosen line's, or when `band` finds the band between them
 // unlike the floor (a baseboard whose lower edge has little contrast with the floor). Before it,
 // the floor rule (`floor_band`): the nearest line above the chosen one whose band is floor
-// becomes the chosen line, its boundary score the higher of the two (`floor_band.boundary`).
+// becomes the chosen line, its boundary score the higher of the two (`floor_band.boundary`); when
+// it moved, the stripe rule from its line with the floor band's own colour
+// (`floor_band.stripe_beyond_floor_band`), and the baseboard rule then never steps back to or
+// inside that stripe's far edge.
 // After both, the stripe rule (`floor_band.floor_above`): when the floor goes on above a line
 // beyond the chosen one, the next line above that one becomes the chosen line. Last, the
 // inside-floor rule (`floor_band.inside_min_likeness`): a chosen line with floor colour above it
