@@ -4,7 +4,7 @@
 set -euo pipefail
 
 PACKAGES=(
-  build-essential cmake pkg-config
+  build-essential cmake ninja-build pkg-config
   libeigen3-dev libceres-dev libopencv-dev libgoogle-glog-dev libgflags-dev libyaml-cpp-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   librosbag-storage-dev libsensor-msgs-dev python3-rosbag python3-sensor-msgs

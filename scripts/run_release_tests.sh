@@ -8,7 +8,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD_DIR=${BUILD_DIR:-build}
 start=$(date +%s)
-cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release -DCORRIDOR_WERROR=ON \
+GENERATOR=($(bash scripts/cmake_generator.sh "$BUILD_DIR"))
+cmake -S . -B "$BUILD_DIR" "${GENERATOR[@]}" -DCMAKE_BUILD_TYPE=Release -DCORRIDOR_WERROR=ON \
   -DCORRIDOR_BUILD_BENCHMARKS=OFF >/dev/null
 # Every installed target, for the install check; and the tools the Python tests run.
 targets=(corridor_depth corridor_synth corridor_eval corridor_score solver_compare)
@@ -19,7 +20,9 @@ if grep -q "CORRIDOR_BUILD_PYTHON:BOOL=ON" "$BUILD_DIR/CMakeCache.txt"; then
 fi
 if grep -q "CORRIDOR_WITH_ROS:BOOL=ON" "$BUILD_DIR/CMakeCache.txt"; then
   # The node and its test binaries: every target of ros/.
-  targets+=($(cmake --build "$BUILD_DIR" --target help | sed -n 's/^\.\.\. \(ros_[a-z_]*_test\|corridor_depth_node\|corridor_option_table\).*/\1/p'))
+  # `help` lists "... NAME" (make) or "NAME: phony" (Ninja).
+  targets+=($(cmake --build "$BUILD_DIR" --target help |
+    sed -n -E 's/^(\.\.\. )?(ros_[a-z_]*_test|corridor_depth_node|corridor_option_table)(:| |$).*/\2/p' | sort -u))
   labels+=(ros)
 fi
 if [ ${#labels[@]} -eq 0 ]; then

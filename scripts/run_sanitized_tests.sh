@@ -20,7 +20,8 @@ LINKER=()
 if ld.gold --version >/dev/null 2>&1; then
   LINKER=(-DCMAKE_EXE_LINKER_FLAGS=-fuse-ld=gold -DCMAKE_SHARED_LINKER_FLAGS=-fuse-ld=gold)
 fi
-cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -g1" \
+GENERATOR=($(bash scripts/cmake_generator.sh "$BUILD_DIR"))
+cmake -S . -B "$BUILD_DIR" "${GENERATOR[@]}" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -g1" \
   -DCORRIDOR_SANITIZE=ON -DCORRIDOR_WERROR=ON -DCORRIDOR_BUILD_BENCHMARKS=OFF \
   -DCORRIDOR_WITH_ROS=OFF "${LINKER[@]}" \
   >/dev/null
