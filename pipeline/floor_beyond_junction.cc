@@ -1,0 +1,117 @@
+#include "pipeline/floor_beyond_junction.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace corridor {
+namespace {
+
+// Offsets across the line, in search pixels, of the colours compared on each side (clear of the
+// edge's own blur).
+constexpr double kNear = 2.0, kFar = 4.0;
+// The line is examined up to this far (search pixels) from the vanishing point, where the lines
+// and the objects along them are too close to tell apart.
+constexpr double kMinVpDistance = 10.0;
+// How far across the line (search pixels) a support pixel of the line counts as on it.
+constexpr double kSupportReach = 2.0;
+// A point of the line where the contrast across it is below kFlatContrast of the line's own, and
+// whose two sides differ from the floor's middle by less than kFloorLike of it, has the floor on
+// both sides.
+constexpr double kFlatContrast = 0.25, kFloorLike = 0.25;
+
+// The mean colour of the pixels from `p + near n` to `p + far n` (1 px steps, nearest pixel);
+// false when one falls outside the image.
+bool SideColour(const cv::Mat& bgr, const Eigen::Vector2d& p, const Eigen::Vector2d& n,
+                cv::Vec3d* colour) {
+  cv::Vec3d sum(0, 0, 0);
+  int count = 0;
+  for (double d = kNear; d <= kFar + 1e-9; d += 1.0) {
+    const int u = static_cast<int>(std::lround(p.x() + d * n.x()));
+    const int v = static_cast<int>(std::lround(p.y() + d * n.y()));
+    if (u < 0 || v < 0 || u >= bgr.cols || v >= bgr.rows) return false;
+    const cv::Vec3b& c = bgr.at<cv::Vec3b>(v, u);
+    sum += cv::Vec3d(c[0], c[1], c[2]);
+    ++count;
+  }
+  *colour = sum * (1.0 / count);
+  return true;
+}
+
+double Distance(const cv::Vec3d& a, const cv::Vec3d& b) {
+  return std::abs(a[0] - b[0]) + std::abs(a[1] - b[1]) + std::abs(a[2] - b[2]);
+}
+
+}  // namespace
+
+FloorBeyond MeasureFloorBeyond(const cv::Mat& bgr, int scale, const JunctionLine& line,
+                               const JunctionLine& other, const Eigen::Vector2d& vp) {
+  FloorBeyond out;
+  if (bgr.empty() || bgr.type() != CV_8UC3 || scale < 1) return out;
+  const double s = 1.0 / scale;
+  const Eigen::Vector2d near_end = line.near_end * s, v = vp * s;
+  if (!v.allFinite()) return out;
+  const Eigen::Vector2d to_vp = v - near_end;
+  const double length = to_vp.norm() - kMinVpDistance;
+  if (!(length > 4 * kFar)) return out;
+  const Eigen::Vector2d dir = to_vp.normalized();
+  // The wall side: away from the other junction (which lies on the floor's side).
+  Eigen::Vector2d n(-dir.y(), dir.x());
+  if (n.dot(other.near_end * s - near_end) > 0) n = -n;
+  // The floor is known to go on only as far as the other junction's support: floor points at one
+  // depth share an image row (no roll), so the line is examined up to that row.
+  const double stop_row = other.far_end.y() * s;
+
+  // The other junction's column at a row (its line a u + b v + c = 0, in search pixels).
+  const Eigen::Vector3d& o = other.line;
+  if (!(std::abs(o.x()) > 1e-6)) return out;
+  const auto other_u = [&](double row) { return -(o.y() * row * scale + o.z()) / o.x() * s; };
+
+  // Where the line has edge support of its own: an edge there, however faint, is a boundary.
+  std::vector<char> supported(static_cast<size_t>(length) + 2, 0);
+  for (const Eigen::Vector2d& raw : line.support) {
+    const Eigen::Vector2d q = raw * s - near_end;
+    if (std::abs(q.dot(n)) > kSupportReach) continue;
+    const long at = std::lround(q.dot(dir));
+    for (long k = at - 1; k <= at + 1; ++k) {
+      if (k >= 0 && k < static_cast<long>(supported.size())) supported[static_cast<size_t>(k)] = 1;
+    }
+  }
+
+  std::vector<double> across;
+  std::vector<double> floor_change;
+  std::vector<char> on_support;
+  for (double t = 0; t <= length; t += 1.0) {
+    const Eigen::Vector2d p = near_end + t * dir;
+    if (p.y() < stop_row) break;
+    cv::Vec3d wall, floor, middle;
+    if (!SideColour(bgr, p, n, &wall) || !SideColour(bgr, p, -n, &floor)) continue;
+    // The floor at the same depth: the middle of the floor between the two junctions, same row.
+    const Eigen::Vector2d mid(0.5 * (p.x() + other_u(p.y())), p.y());
+    if (!SideColour(bgr, mid, Eigen::Vector2d(0, 1), &middle)) continue;
+    across.push_back(Distance(wall, floor));
+    on_support.push_back(supported[static_cast<size_t>(t)]);
+    floor_change.push_back(std::max(Distance(floor, middle), Distance(wall, middle)));
+  }
+  const int count = static_cast<int>(across.size());
+  if (count < 10) return out;
+  // The junction's own contrast: what the line shows where it is an edge (its upper quartile).
+  std::vector<double> sorted = across;
+  auto q = sorted.begin() + static_cast<std::ptrdiff_t>(3 * count / 4);
+  std::nth_element(sorted.begin(), q, sorted.end());
+  const double own = *q;
+  if (!(own > 1e-6)) return out;
+  int floor_across = 0;
+  for (int i = 0; i < count; ++i) {
+    const size_t k = static_cast<size_t>(i);
+    if (!on_support[k] && across[k] < kFlatContrast * own && floor_change[k] < kFloorLike * own) {
+      ++floor_across;
+    }
+  }
+  out.samples = count;
+  out.contrast = own;
+  out.floor_across = static_cast<double>(floor_across) / count;
+  return out;
+}
+
+}  // namespace corridor
