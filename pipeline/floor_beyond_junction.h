@@ -3,7 +3,9 @@
 #include <Eigen/Core>
 #include <opencv2/core.hpp>
 
+#include "corridor_depth/corridor_geometry.h"
 #include "corridor_depth/junction_lines.h"
+#include "perception/working_image.h"
 
 namespace corridor {
 
@@ -18,14 +20,18 @@ namespace corridor {
 struct FloorBeyond {
   int samples = 0;          // Points of the line measured (0: nothing measured).
   double contrast = 0;      // The line's own contrast across it (the upper quartile, colour sum).
-  double floor_across = 0;  // Fraction of the points with the floor on both sides.
+  double floor_across = 0;  // Fraction of the points with the floor on both sides, in runs
+                            // longer along the corridor than a doorway.
 };
 
 // `line`: the junction (raw pixels of the full image, with its support pixels); `other`: the other
 // side's junction, whose support's far end bounds how far the corridor's floor is known to go on;
-// `vp`: the two lines' vanishing point. `bgr` is the frame at the search resolution, `scale` full-image pixels per
-// pixel of it. Distortion is ignored (the offsets measured are a few pixels).
-FloorBeyond MeasureFloorBeyond(const cv::Mat& bgr, int scale, const JunctionLine& line,
-                               const JunctionLine& other, const Eigen::Vector2d& vp);
+// `vp`: the two lines' vanishing point. `search` is the frame at the search resolution with its
+// camera; `geometry` gives the floor plane (pitch, yaw, camera height) that puts a point of the
+// line at its distance along the corridor. Distortion is ignored for the few pixels measured
+// across the line.
+FloorBeyond MeasureFloorBeyond(const WorkingImage& search, const CorridorGeometry& geometry,
+                               const JunctionLine& line, const JunctionLine& other,
+                               const Eigen::Vector2d& vp);
 
 }  // namespace corridor

@@ -144,7 +144,7 @@ FrameEvidence GatherFrameEvidence(const JunctionPair& junctions, const WorkingIm
     for (int s = 0; s < 2; ++s) {
       // A moved wall no longer stands on its detected line.
       if (s == moved_side) continue;
-      const FloorBeyond beyond = MeasureFloorBeyond(search.bgr, search.scale, *lines[s],
+      const FloorBeyond beyond = MeasureFloorBeyond(search, geometry, *lines[s],
                                                     *lines[1 - s], junctions.vanishing_point);
       if (beyond.samples >= kMinFloorBeyondSamples) evidence.floor_across[s] = beyond.floor_across;
     }

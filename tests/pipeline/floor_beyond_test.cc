@@ -84,19 +84,19 @@ TEST(FloorBeyondTest, TheFloorGoesOnAcrossABoxFootButNotAcrossAWallFoot) {
 
   // The box's front foot, seen from the box's near end to its far end.
   const JunctionLine box_foot = FloorLine(f.camera, g, -dl + kBoxDepth, kBoxZ0, kBoxZ1);
-  const FloorBeyond box = MeasureFloorBeyond(search.bgr, search.scale, box_foot, right, vp);
+  const FloorBeyond box = MeasureFloorBeyond(search, g, box_foot, right, vp);
   ASSERT_GE(box.samples, 20);
   EXPECT_GT(box.floor_across, 0.3);
 
   // The left wall's foot, hidden by the box over its length and seen before and beyond it.
   const JunctionLine left_foot = FloorLine(f.camera, g, -dl, 1.2, 20);
-  const FloorBeyond left = MeasureFloorBeyond(search.bgr, search.scale, left_foot, right, vp);
+  const FloorBeyond left = MeasureFloorBeyond(search, g, left_foot, right, vp);
   ASSERT_GE(left.samples, 20);
   EXPECT_LT(left.floor_across, 0.05);
 
   // The right wall's foot, seen all along.
   const FloorBeyond right_beyond =
-      MeasureFloorBeyond(search.bgr, search.scale, right, left_foot, vp);
+      MeasureFloorBeyond(search, g, right, left_foot, vp);
   ASSERT_GE(right_beyond.samples, 20);
   EXPECT_LT(right_beyond.floor_across, 0.05);
 }
@@ -168,7 +168,7 @@ TEST(FloorBeyondTest, NothingIsMeasuredWithoutAnImage) {
   JunctionLine a, b;
   a.far_end = Eigen::Vector2d(100, 100);
   b.far_end = Eigen::Vector2d(200, 100);
-  const FloorBeyond none = MeasureFloorBeyond(cv::Mat(), 1, a, b, Eigen::Vector2d(150, 50));
+  const FloorBeyond none = MeasureFloorBeyond(WorkingImage(), CorridorGeometry(), a, b, Eigen::Vector2d(150, 50));
   EXPECT_EQ(none.samples, 0);
 }
 
