@@ -114,6 +114,9 @@ FloorBeyond MeasureFloorBeyond(const WorkingImage& search, const CorridorGeometr
   for (double t = 0; t <= length; t += 1.0) {
     const Eigen::Vector2d p = near_end + t * dir;
     if (p.y() < stop_row) break;
+    const double depth = floor_depth(p);
+    // Beyond the end wall the line runs up the end wall, as does the floor's middle at its row.
+    if (geometry.HasEndWall() && depth > geometry.end_distance) break;
     cv::Vec3d wall, floor, middle;
     if (!SideColour(bgr, p, n, &wall) || !SideColour(bgr, p, -n, &floor)) continue;
     // The floor at the same depth: the middle of the floor between the two junctions, same row.
@@ -122,7 +125,7 @@ FloorBeyond MeasureFloorBeyond(const WorkingImage& search, const CorridorGeometr
     Sample sample;
     sample.across = Distance(wall, floor);
     sample.floor_change = std::max(Distance(floor, middle), Distance(wall, middle));
-    sample.depth = floor_depth(p);
+    sample.depth = depth;
     sample.on_support = supported[static_cast<size_t>(t)] != 0;
     samples.push_back(sample);
   }

@@ -28,7 +28,8 @@ struct FloorBeyond {
 // side's junction, whose support's far end bounds how far the corridor's floor is known to go on;
 // `vp`: the two lines' vanishing point. `search` is the frame at the search resolution with its
 // camera; `geometry` gives the floor plane (pitch, yaw, camera height) that puts a point of the
-// line at its distance along the corridor. Distortion is ignored for the few pixels measured
+// line at its distance along the corridor, and the end wall's distance (when seen), beyond which
+// nothing is examined. Distortion is ignored for the few pixels measured
 // across the line.
 FloorBeyond MeasureFloorBeyond(const WorkingImage& search, const CorridorGeometry& geometry,
                                const JunctionLine& line, const JunctionLine& other,

@@ -15,7 +15,7 @@ namespace {
 // Points (search pixels) a floor-beyond measure needs to count, and the fractions of the line with
 // the floor on both sides over which its factor falls from 1 to 0.5.
 constexpr int kMinFloorBeyondSamples = 20;
-constexpr double kFloorBeyondFrom = 0.2, kFloorBeyondTo = 0.35;
+constexpr double kFloorBeyondFrom = 0.1, kFloorBeyondTo = 0.2;
 
 double Ramp(double x, double x0, double x1) { return std::clamp((x - x0) / (x1 - x0), 0.0, 1.0); }
 

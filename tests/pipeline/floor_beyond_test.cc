@@ -101,6 +101,42 @@ TEST(FloorBeyondTest, TheFloorGoesOnAcrossABoxFootButNotAcrossAWallFoot) {
   EXPECT_LT(right_beyond.floor_across, 0.05);
 }
 
+// A short corridor: beyond its end wall's foot the line runs up the end wall, and so does the
+// floor's middle at the same row, which would read as floor on both sides; the end wall's
+// distance bounds what is examined.
+TEST(FloorBeyondTest, TheEndWallIsNotTheFloor) {
+  const Camera camera = Camera::FromHorizontalFov(640, 480, 80.0 * M_PI / 180, 0.66);
+  synth::SceneOptions options;
+  options.width = 2.4;
+  options.ceiling_height = 2.7;
+  options.length = 9.0;
+  options.clutter = 0;
+  options.seed = 5;
+  synth::CorridorScene scene = synth::BuildScene(options);
+  scene.doors.clear();
+  scene.obstacles.clear();
+  synth::Frame frame;
+  const synth::CameraPose pose{0.04, 0.03, 0.1, 0.66, 2.0};
+  ASSERT_TRUE(synth::RenderFrame(scene, camera, pose, &frame).ok());
+  CorridorGeometry g = frame.truth;
+  const double end = options.length - pose.distance;
+  const WorkingImage search = HalveToWidth(frame.bgr, camera, 320);
+  const CorridorRotation<double> r(g.pitch, g.yaw);
+  const Vec3<double> axis = r.Axis();
+  const Eigen::Vector2d vp = camera.Project({axis.x, axis.y, axis.z});
+  // Support up to the end wall; the lines themselves run on to the vanishing point.
+  const JunctionLine left = FloorLine(camera, g, -g.LeftDistance(), 1.2, end);
+  const JunctionLine right = FloorLine(camera, g, g.RightDistance(), 1.2, 50);
+  g.end_distance = end;
+  const FloorBeyond known = MeasureFloorBeyond(search, g, left, right, vp);
+  ASSERT_GE(known.samples, 20);
+  EXPECT_LT(known.floor_across, 0.05);
+  g.end_distance = 0;
+  const FloorBeyond unknown = MeasureFloorBeyond(search, g, left, right, vp);
+  EXPECT_GT(unknown.samples, known.samples);
+  EXPECT_GT(unknown.floor_across, 0.08);
+}
+
 struct PresetFrame {
   synth::Frame frame;
   Camera camera;
