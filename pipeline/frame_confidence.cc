@@ -6,8 +6,16 @@
 #include <string>
 #include <utility>
 
+#include "pipeline/ceiling_agreement.h"
+#include "pipeline/floor_beyond_junction.h"
+
 namespace corridor {
 namespace {
+
+// Points (search pixels) a floor-beyond measure needs to count, and the fractions of the line with
+// the floor on both sides over which its factor falls from 1 to 0.5.
+constexpr int kMinFloorBeyondSamples = 20;
+constexpr double kFloorBeyondFrom = 0.1, kFloorBeyondTo = 0.2;
 
 double Ramp(double x, double x0, double x1) { return std::clamp((x - x0) / (x1 - x0), 0.0, 1.0); }
 
@@ -54,6 +62,20 @@ double FrameConfidence(const FrameEvidence& e, std::string* why) {
                "edge?)";
       });
     }
+  }
+  // The floor goes on across a junction where its edge support is missing: an object's front foot
+  // (a box's, a bench's, a pillar's) taken for the wall's, which ends where the object ends. Two
+  // ceiling sides that agree confirm the walls; otherwise the frame cannot tell the object's face
+  // from the wall, and the layout that puts the wall on the object may be the wrong one.
+  const bool ceiling_confirms = e.ceiling_disagreement >= 0 &&
+                                e.ceiling_disagreement <= std::log(kCeilingSidesAgree);
+  for (int s = 0; s < 2 && !ceiling_confirms; ++s) {
+    if (e.floor_across[s] < 0) continue;
+    factor(1.0 - 0.5 * Ramp(e.floor_across[s], kFloorBeyondFrom, kFloorBeyondTo), [&] {
+      return std::string("the floor goes on across the ") + side_name[s] + " junction on " +
+             Format("%.0f%%", 100 * e.floor_across[s]) +
+             " of its length: an object's front foot taken for the wall's?";
+    });
   }
   // A wall moved out by the ceiling's evidence stands on that evidence alone: its junction is
   // often hidden (by the boxes whose edge was taken for it), so the image cannot confirm it.
@@ -116,6 +138,15 @@ FrameEvidence GatherFrameEvidence(const JunctionPair& junctions, const WorkingIm
     if (!search.bgr.empty()) {
       evidence.crossings[s] = CountVerticalCrossings(search.bgr, search.camera, search.scale,
                                                      geometry, *lines[s], options);
+    }
+  }
+  if (junctions.status.ok() && !search.bgr.empty()) {
+    for (int s = 0; s < 2; ++s) {
+      // A moved wall no longer stands on its detected line.
+      if (s == moved_side) continue;
+      const FloorBeyond beyond = MeasureFloorBeyond(search, geometry, *lines[s],
+                                                    *lines[1 - s], junctions.vanishing_point);
+      if (beyond.samples >= kMinFloorBeyondSamples) evidence.floor_across[s] = beyond.floor_across;
     }
   }
   evidence.ceiling_disagreement = ceiling_disagreement;

@@ -70,6 +70,10 @@ struct FrameEvidence {
   // seen, no one height explains both, and a wall moved to agree with the other side's ceiling
   // would stand on a line that follows edges (CeilingSplitOptions); -1 otherwise.
   double ceiling_split = -1;
+  // Per side: the fraction of the junction line, up to the depth the other junction's support
+  // reaches, where the floor goes on across it with no edge on the line (an object's front foot
+  // taken for the wall's: FloorBeyond, pipeline/floor_beyond_junction.h); -1 when not measured.
+  double floor_across[2] = {-1, -1};
 };
 
 }  // namespace corridor

@@ -100,7 +100,8 @@ std::string ReportCsv(const std::vector<EvalReport>& configs) {
                                      "confidence", "left_junction", "right_junction",
                                      "left_crossing",
                                      "left_reaching", "right_crossing", "right_reaching",
-                                     "ceiling_disagreement", "moved_side", "ceiling_split"};
+                                     "ceiling_disagreement", "moved_side", "ceiling_split",
+                                     "left_floor_across", "right_floor_across"};
   const std::vector<double> caps = configs.empty() ? std::vector<double>() : configs[0].caps;
   for (double cap : caps) {
     for (const char* name : kMetricNames) header.push_back(CapKey(cap) + "_" + name);
@@ -136,6 +137,7 @@ std::string ReportCsv(const std::vector<EvalReport>& configs) {
       row.push_back(f.ran ? CsvNumber(e.ceiling_disagreement) : "");
       row.push_back(f.ran ? std::to_string(e.moved_side) : "");
       row.push_back(f.ran ? CsvNumber(e.ceiling_split) : "");
+      for (double v : {e.floor_across[0], e.floor_across[1]}) row.push_back(f.ran ? CsvNumber(v) : "");
       for (size_t c = 0; c < caps.size(); ++c) {
         const DepthMetrics m = c < f.metrics.size() ? f.metrics[c] : DepthMetrics();
         const bool known = c < f.metrics.size();
