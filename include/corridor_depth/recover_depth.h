@@ -29,7 +29,7 @@ struct RecoverDepthOptions {
   SolverOptions solver_options;                // Options of every solver.
   RasterizerOptions rasterizer_options;        // Options of every rasteriser.
   int points_per_line = 30;                    // N: points sampled along each junction (paper III-B).
-  bool level_roll = false;                     // Estimate the camera's roll about its optical axis from the walls' vertical edges and, when the evidence is clear, recover the frame turned level (result->roll); the depth is turned back.
+  bool level_roll = true;                      // Estimate the camera's roll about its optical axis from the walls' vertical edges and, when the evidence is clear, recover the frame turned level (result->roll); the depth is turned back.
   std::string solver_evidence = "lines";       // What the solvers fit: "lines", points_per_line points on each fitted junction line; "edges", each junction's measured sub-pixel edge points with weights (a side with fewer than points_per_line of them falls back to its line's points).
   double min_width = 0.5;                      // Narrower estimates are implausible, m.
   double max_width = 20.0;                     // Wider estimates are implausible, m.

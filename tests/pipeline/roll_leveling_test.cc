@@ -37,6 +37,7 @@ TEST(RollLevelingTest, ARolledFrameIsRecoveredLevel) {
   ASSERT_TRUE(synth::RealBuildingsPreset("head", preset_options, &presets).ok());
   const synth::ScenePreset& preset = presets[0];
   RecoverDepthOptions as_seen_options, level_options;
+  as_seen_options.level_roll = false;
   level_options.level_roll = true;
   std::unique_ptr<DepthRecoverer> as_seen, level;
   ASSERT_TRUE(DepthRecoverer::Create(as_seen_options, &as_seen).ok());
@@ -53,7 +54,7 @@ TEST(RollLevelingTest, ARolledFrameIsRecoveredLevel) {
     std::printf("frame %d: roll %.2f deg, found %.2f deg; AbsRel < 5 m %.4f as seen, %.4f level\n",
                 i, pose.roll * 180 / M_PI, turned.roll * 180 / M_PI, seen_error, level_error);
     EXPECT_EQ(seen.roll, 0);
-    EXPECT_NEAR(turned.roll, pose.roll, 0.5 * M_PI / 180) << i;
+    EXPECT_NEAR(turned.roll, pose.roll, 0.2 * M_PI / 180) << i;
     EXPECT_NE(turned.fallback.find("recovered level"), std::string::npos) << turned.fallback;
     EXPECT_EQ(turned.depth.size(), frame.bgr.size());
     EXPECT_LT(level_error, 0.7 * seen_error) << i;
