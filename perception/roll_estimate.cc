@@ -4,8 +4,6 @@
 #include <cmath>
 #include <vector>
 
-#include <opencv2/imgproc.hpp>
-
 #include "perception/vertical_segments.h"
 
 namespace corridor {

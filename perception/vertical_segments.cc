@@ -4,8 +4,6 @@
 #include <cmath>
 #include <cstdlib>
 
-#include <opencv2/imgproc.hpp>
-
 namespace corridor {
 namespace {
 
