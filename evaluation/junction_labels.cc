@@ -103,7 +103,7 @@ Status ReadJunctionLabels(const std::string& path, std::vector<JunctionLabel>* l
 }
 
 bool ProjectedJunction(const CorridorGeometry& g, const Camera& camera, int side,
-                       Eigen::Vector3d* line) {
+                       Eigen::Vector3d* line, double roll) {
   const double x = side == 0 ? -g.LeftDistance() : g.RightDistance();
   if (!(g.width > 0) || !std::isfinite(x)) return false;
   const CorridorRotation<double> r(g.pitch, g.yaw);
@@ -113,7 +113,10 @@ bool ProjectedJunction(const CorridorGeometry& g, const Camera& camera, int side
   for (int k = 0; k < 2; ++k) {
     const Vec3<double> c = r.ToCamera({x, g.camera_height, along[k] * std::max(1.0, g.width)});
     if (!(c.z > 1e-6)) return false;
-    p[k] = Eigen::Vector3d(camera.fx * c.x / c.z + camera.cx, camera.fy * c.y / c.z + camera.cy, 1);
+    // The frame's camera is the level one turned by `roll` about its optical axis: Rz(roll) c.
+    const double cx = std::cos(roll) * c.x - std::sin(roll) * c.y;
+    const double cy = std::sin(roll) * c.x + std::cos(roll) * c.y;
+    p[k] = Eigen::Vector3d(camera.fx * cx / c.z + camera.cx, camera.fy * cy / c.z + camera.cy, 1);
   }
   Eigen::Vector3d l = p[0].cross(p[1]);
   const double norm = l.head<2>().norm();
@@ -123,7 +126,7 @@ bool ProjectedJunction(const CorridorGeometry& g, const Camera& camera, int side
 }
 
 LabelScore ScoreAgainstLabel(const JunctionLabel& label, bool ok, const CorridorGeometry& geometry,
-                             const Camera& camera) {
+                             const Camera& camera, double roll) {
   LabelScore score;
   if (!ok) return score;
   double worst = 0;
@@ -131,7 +134,7 @@ LabelScore ScoreAgainstLabel(const JunctionLabel& label, bool ok, const Corridor
     if (!label.has_side[s]) continue;
     Eigen::Vector3d line;
     double error = 1.0;
-    if (ProjectedJunction(geometry, camera, s, &line)) {
+    if (ProjectedJunction(geometry, camera, s, &line, roll)) {
       error = 0;
       for (const Eigen::Vector2d& raw : label.side[s]) {
         const Eigen::Vector2d p = camera.Undistort(raw);

@@ -30,9 +30,11 @@ Status ReadJunctionLabels(const std::string& path, std::vector<JunctionLabel>* l
 
 // The image line a*u + b*v + c = 0 (a^2 + b^2 = 1), in ideal pixels, of the floor/wall junction
 // that `geometry` puts on `side` (0 left, 1 right): the 3D line (-d_l, h, s) or (d_r, h, s) of
-// docs/geometry.md projected. False when the geometry has no such wall or it is behind the camera.
+// docs/geometry.md projected. A frame recovered level (RecoverDepthResult::roll) has its geometry
+// in the level camera: `roll` turns the line back into the frame's own pixels. False when the
+// geometry has no such wall or it is behind the camera.
 bool ProjectedJunction(const CorridorGeometry& geometry, const Camera& camera, int side,
-                       Eigen::Vector3d* line);
+                       Eigen::Vector3d* line, double roll = 0);
 
 // What a frame's reported junctions are worth against a label.
 enum class LabelVerdict {
@@ -53,7 +55,8 @@ struct LabelScore {
 // Scores a reported geometry (ok = it was reported as the frame's result) against the label. The
 // distance along a segment to a line is largest at one of its ends, so the ends are measured.
 // A labelled side whose junction the geometry cannot project counts as off by the full height.
+// `roll`: the frame's RecoverDepthResult::roll (ProjectedJunction).
 LabelScore ScoreAgainstLabel(const JunctionLabel& label, bool ok, const CorridorGeometry& geometry,
-                             const Camera& camera);
+                             const Camera& camera, double roll = 0);
 
 }  // namespace corridor

@@ -162,7 +162,8 @@ void CorridorDepthNode::Process(const Input& input) {
   }
   const RasterizerOptions& raster = processor_->options().rasterizer_options;
   markers_publisher_.publish(
-      CorridorMarkers(result.geometry, raster.max_range, raster.max_height, header));
+      CorridorMarkers(result.geometry, raster.max_range, raster.max_height, header,
+                      result.roll));
   geometry_publisher_.publish(
       GeometryMessage(StampText(header.stamp), header.frame_id, status, &result, &camera));
 }

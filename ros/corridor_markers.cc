@@ -27,9 +27,11 @@ visualization_msgs::Marker BaseMarker(const std_msgs::Header& header, int id) {
 }  // namespace
 
 visualization_msgs::MarkerArray CorridorMarkers(const CorridorGeometry& g, double max_range,
-                                                double max_height, const std_msgs::Header& header) {
+                                                double max_height, const std_msgs::Header& header,
+                                                double roll) {
   const Eigen::Matrix3d rotation =
-      (Eigen::AngleAxisd(g.pitch, Eigen::Vector3d::UnitX()) *
+      (Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitZ()) *
+       Eigen::AngleAxisd(g.pitch, Eigen::Vector3d::UnitX()) *
        Eigen::AngleAxisd(g.yaw, Eigen::Vector3d::UnitY()))
           .toRotationMatrix();
   const double h = g.camera_height;

@@ -15,10 +15,13 @@ namespace corridor {
 // Each is a quad in the corridor frame W of geometry.md (origin at the optical centre, Y down,
 // Z along the axis), from the camera's cross-section Z_W = 0 to the end wall, else to
 // `max_range`; the walls reach the ceiling, else `max_height` above the floor. Its six points are
-// the corners (c0, c1, c2, c0, c2, c3) mapped to the camera frame by P_C = R_x(pitch) R_y(yaw) P_W.
+// the corners (c0, c1, c2, c0, c2, c3) mapped to the camera frame by
+// P_C = R_z(roll) R_x(pitch) R_y(yaw) P_W, `roll` the frame's RecoverDepthResult::roll (a frame
+// recovered level has its geometry in the level camera).
 // A surface the geometry lacks is a DELETE of its id, so that RViz drops a stale one.
 visualization_msgs::MarkerArray CorridorMarkers(const CorridorGeometry& geometry, double max_range,
-                                                double max_height, const std_msgs::Header& header);
+                                                double max_height, const std_msgs::Header& header,
+                                                double roll = 0);
 
 // For a frame without a geometry: one DELETEALL marker.
 visualization_msgs::MarkerArray ClearCorridorMarkers(const std_msgs::Header& header);

@@ -50,6 +50,7 @@ diagnostic_msgs::DiagnosticStatus GeometryMessage(const std::string& stamp,
   values.push_back(Pair("confidence", Number(result ? result->confidence : nan)));
   values.push_back(Pair("yaw_rad", value(g.yaw)));
   values.push_back(Pair("pitch_rad", value(g.pitch)));
+  values.push_back(Pair("roll_rad", value(has ? result->roll : 0.0)));
   values.push_back(Pair("offset_m", value(g.offset)));
   values.push_back(Pair("width_m", value(g.width)));
   values.push_back(Pair("ceiling_height_m", value(g.HasCeiling() ? g.ceiling_height : 0.0)));

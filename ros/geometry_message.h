@@ -18,7 +18,9 @@ namespace corridor {
 //           stamp (the image's, "<sec>.<nsec>"), status (ok/refused/failed), note (as in
 //           geometry.csv: "<code>: <reason>", or how an ok geometry was completed), confidence
 //           (RecoverDepthResult::confidence, in [0, 1]; nan when the frame never reached it),
-//           yaw_rad, pitch_rad, offset_m, width_m, ceiling_height_m (0 = unknown),
+//           yaw_rad, pitch_rad, roll_rad (the roll the frame was recovered level from, 0 when
+//           none was found: the other values are the level camera's), offset_m, width_m,
+//           ceiling_height_m (0 = unknown),
 //           end_distance_m (0 = none seen), camera_height_m, fx_px, fy_px, cx_px, cy_px,
 //           time_s (the library's processing time).
 // `status` is the frame's outcome (result.status, or why it never reached the library).

@@ -131,7 +131,7 @@ int Main(int argc, char** argv) {
       result.status = status;
     }
     const bool ok = result.status.ok() && result.has_geometry;
-    const LabelScore score = ScoreAgainstLabel(label, ok, result.geometry, camera);
+    const LabelScore score = ScoreAgainstLabel(label, ok, result.geometry, camera, result.roll);
     const auto [code, note] = StatusColumns(result.status);
     const std::string group = label.kind + ", " + label.quality;
     ++tallies[group].photos;

@@ -18,6 +18,8 @@ namespace corridor {
 //   confidence   the frame's confidence in [0, 1] (RecoverDepthResult::confidence);
 //   yaw_rad, pitch_rad, offset_m, width_m, ceiling_height_m, end_distance_m: the geometry, with
 //                the signs of docs/geometry.md;
+//   roll_rad     the camera's roll the frame was recovered level from (0 when none was found;
+//                the geometry is then the level camera's: RecoverDepthResult::roll);
 //   fx_px, fy_px, cx_px, cy_px: the intrinsics the frame was recovered with;
 //   time_s       the frame's computing time; stamp "<sec>.<nsec>" for a ROS bag message.
 // An unknown value is empty.

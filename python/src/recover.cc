@@ -116,6 +116,9 @@ void BindRecover(py::module_& m) {
       .def_readonly("confidence", &PyResult::confidence,
                     "In [0, 1]: the evidence for the layout (0 without one); frames below the "
                     "min_confidence keyword are refused with code 'low_confidence'.")
+      .def_readonly("roll", &PyResult::roll,
+                    "Radians: the camera's roll the frame was recovered level from (0 when none "
+                    "was found, or with level_roll=False); `geometry` is then the level camera's.")
       .def_readonly("has_geometry", &PyResult::has_geometry)
       .def_readonly("geometry", &PyResult::geometry)
       .def_readonly("junctions", &PyResult::junctions)

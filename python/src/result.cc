@@ -23,6 +23,7 @@ PyResult MakeResult(RecoverDepthResult&& result, int rows, int cols) {
   out.junctions_tracked = result.junctions_tracked;
   out.ceiling_trusted = result.ceiling_trusted;
   out.confidence = result.confidence;
+  out.roll = result.roll;
   out.times = result.times;
   out.depth = DepthToArray(std::move(result.depth), rows, cols);
   return out;

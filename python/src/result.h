@@ -24,6 +24,7 @@ struct PyResult {
   bool width_held = false, walls_scaled = false, ceiling_held = false;
   bool junctions_tracked = false, ceiling_trusted = false;
   double confidence = 0;
+  double roll = 0;
   StageTimes times;
   pybind11::array_t<float> depth;  // float32 HxW metres, NaN = no estimate.
 };

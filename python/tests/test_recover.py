@@ -176,6 +176,42 @@ def test_options_by_field_and_flag_name(single_frame):
     assert {"solver", "max_range", "roi_top", "hough_angle_window"} <= set(cd.option_names())
 
 
+def rolled(image, degrees):
+    """The image as a camera turned by `degrees` about its optical axis (through the image's
+    centre, which is the principal point of the generated frames) would see it: bilinear."""
+    rows, cols = image.shape[:2]
+    cy, cx = (rows - 1) / 2, (cols - 1) / 2
+    v, u = np.mgrid[0:rows, 0:cols].astype(np.float64)
+    a = np.radians(degrees)
+    # The level image's pixel that lands on (u, v): turned back by -a.
+    x = np.cos(a) * (u - cx) + np.sin(a) * (v - cy) + cx
+    y = -np.sin(a) * (u - cx) + np.cos(a) * (v - cy) + cy
+    x0 = np.clip(np.floor(x).astype(int), 0, cols - 2)
+    y0 = np.clip(np.floor(y).astype(int), 0, rows - 2)
+    fx = np.clip(x - x0, 0, 1)[..., None]
+    fy = np.clip(y - y0, 0, 1)[..., None]
+    img = image.astype(np.float64)
+    top = img[y0, x0] * (1 - fx) + img[y0, x0 + 1] * fx
+    bottom = img[y0 + 1, x0] * (1 - fx) + img[y0 + 1, x0 + 1] * fx
+    return np.ascontiguousarray(np.round(top * (1 - fy) + bottom * fy).astype(np.uint8))
+
+
+def test_a_rolled_frame_reports_its_roll(single_frame):
+    image_path, camera_path, _ = single_frame
+    image = cd.read_image(str(image_path))
+    camera = cd.Camera.from_file(str(camera_path))
+    level = cd.recover_depth(image, camera)
+    assert level.ok and abs(level.roll) < np.radians(0.3)
+    turned = {}
+    for degrees in (2.0, -2.0):
+        res = cd.recover_depth(rolled(image, degrees), camera)
+        assert res.ok, res.status
+        assert abs(abs(res.roll) - np.radians(2.0)) < np.radians(0.3), res.roll
+        assert cd.recover_depth(rolled(image, degrees), camera, level_roll=False).roll == 0
+        turned[degrees] = res.roll
+    assert turned[2.0] * turned[-2.0] < 0  # The roll found follows the turn's direction.
+
+
 def test_min_confidence_refuses_frames_below_it(single_frame):
     image_path, camera_path, _ = single_frame
     image = cd.read_image(str(image_path))

@@ -109,6 +109,18 @@ TEST(CorridorMarkersTest, CornersOfEverySurface) {
   }
 }
 
+// A frame recovered level from a roll of 90 degrees, with no pitch or yaw: the floor (camera
+// y = h without roll) is turned by R_z(90 deg), (x, y) -> (-y, x), to camera x = -h.
+TEST(CorridorMarkersTest, ARolledFramesSurfacesAreTurnedIntoItsCamera) {
+  CorridorGeometry g = TestGeometry();
+  g.pitch = g.yaw = 0;
+  std_msgs::Header header;
+  header.frame_id = "cam_optical";
+  const auto array = CorridorMarkers(g, 30.0, 2.0, header, M_PI / 2);
+  ASSERT_NE(Find(array, 0), nullptr);
+  for (const auto& p : Find(array, 0)->points) EXPECT_NEAR(p.x, -g.camera_height, 1e-9);
+}
+
 // Without a ceiling or an end wall: walls up to max_height, out to max_range, and DELETEs.
 TEST(CorridorMarkersTest, NoCeilingNoEndWall) {
   CorridorGeometry g = TestGeometry();

@@ -621,6 +621,9 @@ TEST(NodeLiveTest, CameraHeightFromTf) {
     const auto& geometry = received.geometry[StampText(t)];
     EXPECT_EQ(Value(geometry, "status"), "ok");
     EXPECT_NEAR(std::atof(Value(geometry, "camera_height_m").c_str()), camera.mount_height, 1e-6);
+    // A level camera: no roll found (the key is there, and near zero).
+    ASSERT_FALSE(Value(geometry, "roll_rad").empty());
+    EXPECT_LT(std::abs(std::atof(Value(geometry, "roll_rad").c_str())), 0.3 * M_PI / 180);
     // ~depth_encoding:=16UC1: millimetres, the truth's within 5% at the bottom centre (floor).
     const sensor_msgs::Image& depth = *received.depth[StampKey(t)];
     EXPECT_EQ(depth.encoding, "16UC1");

@@ -52,6 +52,19 @@ TEST(JunctionLabels, ProjectsTheHandComputedJunctions) {
   EXPECT_NEAR(sr * right.z(), -(c.cx - c.cy) * r, 1e-6);
 }
 
+// A frame recovered level from a roll of 90 degrees: the level camera's left junction
+// (u - cx) + (v - cy) = 0, turned by Rz(90 deg) ((x, y) -> (-y, x) about the principal point),
+// is (u - cx) - (v - cy) = 0 in the frame's pixels.
+TEST(JunctionLabels, ARolledFramesJunctionIsTurnedIntoItsPixels) {
+  const Camera c = TestCamera();
+  Eigen::Vector3d left;
+  ASSERT_TRUE(ProjectedJunction(Centred(), c, 0, &left, M_PI / 2));
+  const double r = 1 / std::sqrt(2.0), s = left.x() > 0 ? 1 : -1;
+  EXPECT_NEAR(s * left.x(), r, 1e-9);
+  EXPECT_NEAR(s * left.y(), -r, 1e-9);
+  EXPECT_NEAR(s * left.z(), -(c.cx - c.cy) * r, 1e-6);
+}
+
 TEST(JunctionLabels, ALineAKnownNumberOfPixelsOff) {
   const Camera c = TestCamera();
   // A vertical shift of s px is s / sqrt(2) px from a 45-degree line.

@@ -163,7 +163,9 @@ TEST(PhotosAsTaken, AnOlderGeometryCsvIsMigrated) {
             "old2,no corridor found: only the left junction is visible,,,,,,,,\n");
   ExpectCleanExit(RunDepthTool(dir.Path("in"), dir.Path("out"), dir), 0, {});
   const std::string text = ReadAll(dir.Path("out/in/geometry.csv"));
-  EXPECT_EQ(text.rfind("frame,status,note,confidence,yaw_rad,pitch_rad,offset_m,width_m,", 0), 0u)
+  EXPECT_EQ(
+      text.rfind("frame,status,note,confidence,yaw_rad,pitch_rad,roll_rad,offset_m,width_m,", 0),
+      0u)
       << text;
   const auto rows = ReadRows(dir.Path("out/in/geometry.csv"));
   ASSERT_EQ(rows.size(), 3u);
@@ -173,6 +175,20 @@ TEST(PhotosAsTaken, AnOlderGeometryCsvIsMigrated) {
   EXPECT_EQ(rows.at("old2").at("status"), "refused");
   EXPECT_EQ(rows.at("old2").at("note"), "no_corridor_found: only the left junction is visible");
   EXPECT_EQ(rows.at("new").at("status"), "ok");
+  // A file from before the roll column: its rows gain an empty roll_rad, their values kept.
+  dir.Write("out/in/geometry.csv",
+            "frame,status,note,confidence,yaw_rad,pitch_rad,offset_m,width_m,ceiling_height_m,"
+            "end_distance_m,fx_px,fy_px,cx_px,cy_px,time_s,stamp\n"
+            "old3,ok,,0.900,0.010000,0.020000,0.1000,2.2000,2.7000,,400.000,400.000,320.000,"
+            "240.000,0.002000,\n");
+  ExpectCleanExit(RunDepthTool(dir.Path("in"), dir.Path("out"), dir), 0, {});
+  const auto migrated = ReadRows(dir.Path("out/in/geometry.csv"));
+  ASSERT_EQ(migrated.count("old3"), 1u);
+  EXPECT_EQ(migrated.at("old3").at("roll_rad"), "");
+  EXPECT_EQ(migrated.at("old3").at("offset_m"), "0.1000");
+  EXPECT_EQ(migrated.at("old3").at("width_m"), "2.2000");
+  EXPECT_EQ(migrated.at("old3").at("time_s"), "0.002000");
+  EXPECT_EQ(migrated.at("new").at("roll_rad"), "0.000000");
   // A file that is no geometry.csv is left as it is, with a clear error.
   dir.Write("out/in/geometry.csv", "a,b,c\n1,2,3\n");
   ExpectCleanExit(RunDepthTool(dir.Path("in"), dir.Path("out"), dir), 2,
