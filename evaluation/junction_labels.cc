@@ -111,12 +111,10 @@ bool ProjectedJunction(const CorridorGeometry& g, const Camera& camera, int side
   Eigen::Vector3d p[2];
   const double along[2] = {3.0, 60.0};
   for (int k = 0; k < 2; ++k) {
-    const Vec3<double> c = r.ToCamera({x, g.camera_height, along[k] * std::max(1.0, g.width)});
+    const Vec3<double> c =
+        TurnedByRoll(r.ToCamera({x, g.camera_height, along[k] * std::max(1.0, g.width)}), roll);
     if (!(c.z > 1e-6)) return false;
-    // The frame's camera is the level one turned by `roll` about its optical axis: Rz(roll) c.
-    const double cx = std::cos(roll) * c.x - std::sin(roll) * c.y;
-    const double cy = std::sin(roll) * c.x + std::cos(roll) * c.y;
-    p[k] = Eigen::Vector3d(camera.fx * cx / c.z + camera.cx, camera.fy * cy / c.z + camera.cy, 1);
+    p[k] = Eigen::Vector3d(camera.fx * c.x / c.z + camera.cx, camera.fy * c.y / c.z + camera.cy, 1);
   }
   Eigen::Vector3d l = p[0].cross(p[1]);
   const double norm = l.head<2>().norm();

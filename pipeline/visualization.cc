@@ -27,8 +27,10 @@ void DrawLine(cv::Mat* canvas, const JunctionLine& line, const Eigen::Vector2d& 
 }
 
 // The floor/wall junctions (X_W = -d_l and d_r, Y_W = h) of the geometry, from 0.5 m to 60 m
-// along the corridor, as thin white polylines.
-void DrawGeometryJunctions(cv::Mat* canvas, const CorridorGeometry& g, const Camera& camera) {
+// along the corridor, as thin white polylines; in the frame's camera, turned by the roll it was
+// recovered level from.
+void DrawGeometryJunctions(cv::Mat* canvas, const CorridorGeometry& g, double roll,
+                           const Camera& camera) {
   if (!camera.CheckIntrinsics(nullptr) || camera.image_width != canvas->cols ||
       camera.image_height != canvas->rows) {
     return;
@@ -39,7 +41,7 @@ void DrawGeometryJunctions(cv::Mat* canvas, const CorridorGeometry& g, const Cam
     std::vector<cv::Point> points;
     for (int i = 0; i <= 60; ++i) {
       const double z = 1.0 / (2.0 + (1.0 / 60 - 2.0) * i / 60.0);  // Uniform in 1/Z.
-      const Vec3<double> c = r.ToCamera({x, g.camera_height, z});
+      const Vec3<double> c = TurnedByRoll(r.ToCamera({x, g.camera_height, z}), roll);
       if (c.z < 0.05) continue;
       Eigen::Vector2d p = camera.Project({c.x, c.y, c.z});
       if (distorted) p = camera.Distort(p);
@@ -173,7 +175,7 @@ cv::Mat MakeResultPanel(const cv::Mat& bgr, const RecoverDepthResult& result, do
     if (g.HasEndWall()) extent += "end wall at " + Metres(g.end_distance);
     if (!extent.empty()) PutCaption(&lines, extent, 1);
     if (!result.fallback.empty()) {
-      DrawGeometryJunctions(&lines, g, result.camera);
+      DrawGeometryJunctions(&lines, g, result.roll, result.camera);
       PutCaption(&lines, FitCaption(result.fallback, lines.cols), extent.empty() ? 1 : 2);
     }
     std::snprintf(text, sizeof(text), "%.2f ms", result.times.total * 1e3);

@@ -151,7 +151,8 @@ int Main(int argc, char** argv) {
       const std::string caption = label.file + ": " + LabelVerdictName(score.verdict) + " (" +
                                   confidence + ")";
       tiles.push_back(
-          LabelTile(bgr, label, ok, result.geometry, camera, caption, FLAGS_tile_width));
+          LabelTile(bgr, label, ok, result.geometry, result.roll, camera, caption,
+                    FLAGS_tile_width));
     }
     progress.Tick(static_cast<int>(i + 1));
   }

@@ -9,7 +9,7 @@
 namespace corridor {
 
 cv::Mat LabelTile(const cv::Mat& bgr, const JunctionLabel& label, bool ok,
-                  const CorridorGeometry& geometry, const Camera& camera,
+                  const CorridorGeometry& geometry, double roll, const Camera& camera,
                   const std::string& caption, int tile_width) {
   cv::Mat photo = bgr.clone();
   const int thick = std::max(2, photo.rows / 150);
@@ -26,7 +26,7 @@ cv::Mat LabelTile(const cv::Mat& bgr, const JunctionLabel& label, bool ok,
       const CorridorRotation<double> r(geometry.pitch, geometry.yaw);
       std::vector<cv::Point> points;
       for (double z = 0.2; z < 2000; z *= 1.15) {
-        const Vec3<double> c = r.ToCamera({x, geometry.camera_height, z});
+        const Vec3<double> c = TurnedByRoll(r.ToCamera({x, geometry.camera_height, z}), roll);
         if (!(c.z > 0.05)) continue;
         const Eigen::Vector2d p = camera.Distort(camera.Project({c.x, c.y, c.z}));
         if (p.allFinite() && std::abs(p.x()) < 1e5 && std::abs(p.y()) < 1e5) {

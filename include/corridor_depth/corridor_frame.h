@@ -58,6 +58,15 @@ struct CorridorRotation {
   }
 };
 
+// A point of a level camera's frame as the same camera turned by `roll` about its optical axis
+// sees it: R_z(roll) c, R_z(r) = [cos r, -sin r, 0; sin r, cos r, 0; 0, 0, 1]. A frame recovered
+// level (RecoverDepthResult::roll) has its geometry in the level camera: this puts the geometry's
+// points back into the frame's own camera.
+inline Vec3<double> TurnedByRoll(const Vec3<double>& c, double roll) {
+  const double cr = std::cos(roll), sr = std::sin(roll);
+  return {cr * c.x - sr * c.y, sr * c.x + cr * c.y, c.z};
+}
+
 // The normalised ray (x, y, 1) of a raw image pixel, lens distortion removed.
 inline Vec3<double> RayOfRawPixel(const Camera& camera, double u, double v) {
   const Eigen::Vector2d ideal = camera.Undistort({u, v});
