@@ -14,6 +14,7 @@
 #include "synth/corridor_renderer.h"
 #include "synth/corridor_scene.h"
 #include "synth/real_buildings.h"
+#include "tests/support/preset_frame.h"
 
 namespace corridor {
 namespace {
@@ -137,30 +138,8 @@ TEST(FloorBeyondTest, TheEndWallIsNotTheFloor) {
   EXPECT_GT(unknown.floor_across, 0.08);
 }
 
-struct PresetFrame {
-  synth::Frame frame;
-  Camera camera;
-  double true_width = 0;
-};
-
-// Frame `index` of scene `scene` of a real-buildings class, rendered as the preset renders it.
-PresetFrame RenderPreset(const std::string& class_name, int scene, int index) {
-  synth::RealBuildingsOptions options;
-  options.scenes = scene + 1;
-  options.frames = index + 1;
-  std::vector<synth::ScenePreset> presets;
-  PresetFrame out;
-  if (!synth::RealBuildingsPreset(class_name, options, &presets).ok()) return out;
-  const synth::ScenePreset& preset = presets.at(static_cast<size_t>(scene));
-  out.camera = preset.camera;
-  out.true_width = preset.scene.width;
-  if (!synth::RenderFrame(preset.scene, preset.camera,
-                          preset.poses.at(static_cast<size_t>(index)), &out.frame)
-           .ok()) {
-    out.frame.bgr.release();
-  }
-  return out;
-}
+using testing_util::PresetFrame;
+using testing_util::RenderPreset;
 
 // Frames whose layout puts a wall on an object's front (a locker's, a bench's, a pillar's): the
 // layout's width is far off, and the frame is refused for the floor that goes on across that

@@ -11,31 +11,15 @@
 #include "corridor_depth/recover_depth.h"
 #include "synth/corridor_renderer.h"
 #include "synth/real_buildings.h"
+#include "tests/support/preset_frame.h"
 
 namespace corridor {
 namespace {
 
-struct PresetFrame {
-  synth::Frame frame;
-  Camera camera;
-  double true_width = 0;
-};
+using testing_util::PresetFrame;
 
-// Frame `index` of scene `scene` of a real-buildings class, rendered as the preset renders it.
 PresetFrame Render(const std::string& class_name, int scene, int index) {
-  synth::RealBuildingsOptions options;
-  options.scenes = scene + 1;
-  options.frames = index + 1;
-  std::vector<synth::ScenePreset> presets;
-  PresetFrame out;
-  if (!synth::RealBuildingsPreset(class_name, options, &presets).ok()) return out;
-  const synth::ScenePreset& preset = presets.at(scene);
-  out.camera = preset.camera;
-  out.true_width = preset.scene.width;
-  if (!synth::RenderFrame(preset.scene, preset.camera, preset.poses.at(index), &out.frame).ok()) {
-    out.frame.bgr.release();
-  }
-  return out;
+  return testing_util::RenderPreset(class_name, scene, index);
 }
 
 // Relative width error of the recovered frame; NaN when it is not ok.

@@ -1,0 +1,44 @@
+#pragma once
+
+// One frame of the generator's real-buildings preset, rendered as the preset renders it, with the
+// scene's true width: for tests that need a class's frame (a handrail, a bench, a head-mounted
+// camera) with exact truth.
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "corridor_depth/camera.h"
+#include "synth/corridor_renderer.h"
+#include "synth/real_buildings.h"
+
+namespace corridor {
+namespace testing_util {
+
+struct PresetFrame {
+  synth::Frame frame;  // Empty bgr when the preset or the render failed.
+  Camera camera;
+  double true_width = 0;
+};
+
+// Frame `index` of scene `scene` of the class `class_name` ("rail", "furniture", "head", ...).
+inline PresetFrame RenderPreset(const std::string& class_name, int scene, int index) {
+  synth::RealBuildingsOptions options;
+  options.scenes = scene + 1;
+  options.frames = index + 1;
+  std::vector<synth::ScenePreset> presets;
+  PresetFrame out;
+  if (!synth::RealBuildingsPreset(class_name, options, &presets).ok()) return out;
+  const synth::ScenePreset& preset = presets.at(static_cast<size_t>(scene));
+  out.camera = preset.camera;
+  out.true_width = preset.scene.width;
+  if (!synth::RenderFrame(preset.scene, preset.camera, preset.poses.at(static_cast<size_t>(index)),
+                          &out.frame)
+           .ok()) {
+    out.frame.bgr.release();
+  }
+  return out;
+}
+
+}  // namespace testing_util
+}  // namespace corridor
