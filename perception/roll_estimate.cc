@@ -4,6 +4,8 @@
 #include <cmath>
 #include <vector>
 
+#include <Eigen/Eigenvalues>
+
 #include "perception/vertical_segments.h"
 
 namespace corridor {
@@ -80,7 +82,10 @@ RollEstimate EstimateRoll(const cv::Mat& bgr, const Camera& camera,
   };
   // Each row's floor span, which the segment search skips (less 3 px each side, for the walls'
   // verticals that end on the junction): where X = -d_l and X = d_r on the floor.
-  std::vector<cv::Vec2i> floor_span;
+  // Per-thread buffers: they only grow, so a stream of frames allocates nothing here.
+  thread_local std::vector<cv::Vec2i> floor_span;
+  thread_local std::vector<cv::Vec4d> segments, candidates;
+  floor_span.clear();
   if (geometry.camera_height > 0 && geometry.width > 0 && std::cos(ph) > 0) {
     floor_span.assign(bgr.rows, cv::Vec2i(0, 0));
     for (int v = 0; v < bgr.rows; ++v) {
@@ -101,8 +106,8 @@ RollEstimate EstimateRoll(const cv::Mat& bgr, const Camera& camera,
   }
   VerticalSegmentOptions find;
   find.min_length_px = options.min_length_px;
-  const std::vector<cv::Vec4d> segments = FindVerticalSegments(bgr, find, floor_span);
-  std::vector<cv::Vec4d> candidates;
+  FindVerticalSegments(bgr, find, floor_span, &segments);
+  candidates.clear();
   const cv::Vec3d level = vertical_vp(0);
   for (const cv::Vec4d& s : segments) {
     if (AngleTo(s, level) > options.candidate_deg * kDeg) continue;
@@ -116,8 +121,8 @@ RollEstimate EstimateRoll(const cv::Mat& bgr, const Camera& camera,
     double mx, my, ux, uy, length;
     bool left;
   };
-  std::vector<Candidate> prepared;
-  prepared.reserve(candidates.size());
+  thread_local std::vector<Candidate> prepared;
+  prepared.clear();
   for (const cv::Vec4d& s : candidates) {
     const double length = std::hypot(s[2] - s[0], s[3] - s[1]);
     if (!(length > 0)) continue;
@@ -179,9 +184,14 @@ RollEstimate EstimateRoll(const cv::Mat& bgr, const Camera& camera,
     plane /= n;
     scatter += std::hypot(s[2] - s[0], s[3] - s[1]) * (plane * plane.t());
   }
-  cv::Mat values, vectors;
-  cv::eigen(cv::Mat(scatter), values, vectors);
-  cv::Vec3d v(vectors.at<double>(2, 0), vectors.at<double>(2, 1), vectors.at<double>(2, 2));
+  Eigen::Matrix3d m;
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) m(r, c) = scatter(r, c);
+  }
+  // Eigenvalues in increasing order: the first column is the direction sought.
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(m);
+  const Eigen::Vector3d smallest = solver.eigenvectors().col(0);
+  cv::Vec3d v(smallest.x(), smallest.y(), smallest.z());
   if (v[1] < 0) v = -v;
   const double free_roll = std::atan2(-v[0], v[1]);
   out.found = best_inliers >= options.min_segments && best_each_side >= options.min_each_side &&

@@ -45,20 +45,32 @@ std::vector<cv::Vec4d> FindVerticalSegments(const cv::Mat& grey,
                                             const VerticalSegmentOptions& options,
                                             const std::vector<cv::Vec2i>& skip) {
   std::vector<cv::Vec4d> out;
-  if (grey.empty() || grey.depth() != CV_8U || grey.rows < 3 || grey.cols < 3) return out;
+  FindVerticalSegments(grey, options, skip, &out);
+  return out;
+}
+
+void FindVerticalSegments(const cv::Mat& grey, const VerticalSegmentOptions& options,
+                          const std::vector<cv::Vec2i>& skip, std::vector<cv::Vec4d>* segments) {
+  std::vector<cv::Vec4d>& out = *segments;
+  out.clear();
+  if (grey.empty() || grey.depth() != CV_8U || grey.rows < 3 || grey.cols < 3) return;
   // One channel: the image's own, or a colour image's green (index 1 of BGR): door frames and
   // corners are edges in every channel, and green is the one a colour camera samples best.
   const int stride = grey.channels(), channel = stride == 1 ? 0 : 1;
-  std::vector<short> row(grey.cols, 0);
+  // Per-thread buffers: they only grow, so a stream of frames allocates nothing here.
+  thread_local std::vector<short> row;
+  row.assign(grey.cols, 0);
   const double max_slope = std::tan(options.max_tilt_deg * M_PI / 180.0);
   // A chain continues to a peak at most this far from its last one, per scanned row (a gap of
   // one scanned row allowed).
   const double reach = options.row_step * max_slope + 0.75;
 
-  std::vector<Chain> chains;
-  std::vector<int> open, next_open;  // Indices of chains that may still continue, by last_x.
-  std::vector<Peak> peaks;
-  std::vector<char> taken;
+  thread_local std::vector<Chain> chains;
+  thread_local std::vector<int> open, next_open;  // Chains that may still continue, by last_x.
+  thread_local std::vector<Peak> peaks;
+  thread_local std::vector<char> taken;
+  chains.clear();
+  open.clear();
   const auto close = [&](const Chain& c) {
     if (c.last_row - c.first_row < options.min_length_px) return;
     const double det = c.n * c.syy - c.sy * c.sy;
@@ -146,7 +158,6 @@ std::vector<cv::Vec4d> FindVerticalSegments(const cv::Mat& grey,
     open.swap(next_open);
   }
   for (int k : open) close(chains[k]);
-  return out;
 }
 
 }  // namespace corridor

@@ -30,5 +30,8 @@ struct VerticalSegmentOptions {
 std::vector<cv::Vec4d> FindVerticalSegments(const cv::Mat& grey,
                                             const VerticalSegmentOptions& options,
                                             const std::vector<cv::Vec2i>& skip = {});
+// The same into *segments, which keeps its memory.
+void FindVerticalSegments(const cv::Mat& grey, const VerticalSegmentOptions& options,
+                          const std::vector<cv::Vec2i>& skip, std::vector<cv::Vec4d>* segments);
 
 }  // namespace corridor
