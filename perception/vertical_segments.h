@@ -23,10 +23,10 @@ struct VerticalSegmentOptions {
   bool Check(std::string* why) const;
 };
 
-// Segments (x0, y0, x1, y1), top end first, in `grey`'s pixels (8-bit; of a 3-channel BGR image,
-// the green channel is used). When
-// `skip` is not empty (one entry per row), the columns [skip[y][0], skip[y][1]) of row y are not
-// scanned: a region known to hold no such edges (the floor between the walls).
+// Segments (x0, y0, x1, y1), top end first, in `grey`'s pixels (8-bit, 1 to 4 channels; of a
+// BGR(A) image, the green channel is used). When `skip` is not empty (one entry per row), the
+// columns [skip[y][0], skip[y][1]) of row y are not scanned: a region known to hold no such edges
+// (the floor between the walls).
 std::vector<cv::Vec4d> FindVerticalSegments(const cv::Mat& grey,
                                             const VerticalSegmentOptions& options,
                                             const std::vector<cv::Vec2i>& skip = {});

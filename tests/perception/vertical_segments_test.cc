@@ -84,6 +84,38 @@ TEST(VerticalSegmentsTest, SkippedColumnsAreNotScanned) {
   EXPECT_NE(Longest(FindVerticalSegments(bgr, VerticalSegmentOptions())), nullptr);
 }
 
+// The green channel of a BGR or BGRA image is read as the grey image itself (the other channels
+// hold a different edge); a skipped span at the image's edge or beyond it, or an empty one,
+// leaves the edge in the middle to be found as without a span.
+TEST(VerticalSegmentsTest, ChannelLayoutsAndSpansAtTheEdgeKeepTheSegments) {
+  const cv::Mat image = EdgeImage(150.3, 2.0);
+  const std::vector<cv::Vec4d> grey = FindVerticalSegments(image, VerticalSegmentOptions());
+  const cv::Vec4d* expected = Longest(grey);
+  ASSERT_NE(expected, nullptr);
+  const cv::Mat other = EdgeImage(60.0, -10.0);
+  cv::Mat bgr, bgra;
+  cv::merge(std::vector<cv::Mat>{other, image, other}, bgr);
+  cv::merge(std::vector<cv::Mat>{other, image, other, other}, bgra);
+  const int cols = image.cols;
+  const std::vector<std::vector<cv::Vec2i>> skips = {
+      {},
+      std::vector<cv::Vec2i>(image.rows, cv::Vec2i(0, 20)),
+      std::vector<cv::Vec2i>(image.rows, cv::Vec2i(cols - 20, cols)),
+      std::vector<cv::Vec2i>(image.rows, cv::Vec2i(cols + 5, cols + 40)),
+      std::vector<cv::Vec2i>(image.rows, cv::Vec2i(40, 40))};
+  for (const cv::Mat* input : std::vector<const cv::Mat*>{&image, &bgr, &bgra}) {
+    for (size_t k = 0; k < skips.size(); ++k) {
+      const std::vector<cv::Vec4d> found =
+          FindVerticalSegments(*input, VerticalSegmentOptions(), skips[k]);
+      const cv::Vec4d* s = Longest(found);
+      ASSERT_NE(s, nullptr) << input->channels() << " channels, skip " << k;
+      for (int i = 0; i < 4; ++i) {
+        EXPECT_NEAR((*s)[i], (*expected)[i], 1e-9) << input->channels() << " channels, skip " << k;
+      }
+    }
+  }
+}
+
 TEST(VerticalSegmentsTest, BadOptionsAreRejected) {
   VerticalSegmentOptions options;
   std::string why;
