@@ -116,6 +116,19 @@ TEST(VerticalSegmentsTest, ChannelLayoutsAndSpansAtTheEdgeKeepTheSegments) {
   }
 }
 
+// A 3x3 Sobel of 8-bit values reaches at most 4 x 255: a larger least gradient (even one beyond
+// 16-bit range) finds nothing, and a least gradient of 1 still finds the edge.
+TEST(VerticalSegmentsTest, GradientThresholdsAtTheExtremes) {
+  const cv::Mat image = EdgeImage(150.3, 2.0);
+  VerticalSegmentOptions options;
+  for (const double min_gradient : {1021.0, 40000.0, 70000.0}) {
+    options.min_gradient = min_gradient;
+    EXPECT_TRUE(FindVerticalSegments(image, options).empty()) << min_gradient;
+  }
+  options.min_gradient = 1;
+  EXPECT_NE(Longest(FindVerticalSegments(image, options)), nullptr);
+}
+
 TEST(VerticalSegmentsTest, BadOptionsAreRejected) {
   VerticalSegmentOptions options;
   std::string why;
