@@ -28,6 +28,14 @@ struct BoxFrame {
   synth::CameraPose pose;
 };
 
+// The corridor of `options` without doors or boxes: nothing but its walls, floor and ceiling.
+synth::CorridorScene PlainScene(const synth::SceneOptions& options) {
+  synth::CorridorScene scene = synth::BuildScene(options);
+  scene.doors.clear();
+  scene.obstacles.clear();
+  return scene;
+}
+
 // A plain corridor (no doors, no clutter) with one box against the left wall, ahead of the
 // camera.
 BoxFrame RenderBoxFrame() {
@@ -38,9 +46,7 @@ BoxFrame RenderBoxFrame() {
   options.ceiling_height = 2.8;
   options.clutter = 0;
   options.seed = 11;
-  synth::CorridorScene scene = synth::BuildScene(options);
-  scene.doors.clear();
-  scene.obstacles.clear();
+  synth::CorridorScene scene = PlainScene(options);
   out.pose = synth::CameraPose{0.05, 0.04, 0.1, 0.66, 3.0};
   synth::Obstacle box;
   box.kind = synth::Obstacle::kFurniture;
@@ -113,9 +119,7 @@ TEST(FloorBeyondTest, TheEndWallIsNotTheFloor) {
   options.length = 9.0;
   options.clutter = 0;
   options.seed = 5;
-  synth::CorridorScene scene = synth::BuildScene(options);
-  scene.doors.clear();
-  scene.obstacles.clear();
+  synth::CorridorScene scene = PlainScene(options);
   synth::Frame frame;
   const synth::CameraPose pose{0.04, 0.03, 0.1, 0.66, 2.0};
   ASSERT_TRUE(synth::RenderFrame(scene, camera, pose, &frame).ok());
