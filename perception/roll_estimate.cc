@@ -38,6 +38,9 @@ bool RollEstimateOptions::Check(std::string* why) const {
     reason =
         "roll: min_length_px must be > 0, min_segments >= 1, min_each_side >= 0, "
         "max_cost_fraction in (0, 1]";
+  } else if (!(min_spread >= 0 && min_spread <= 1) ||
+             !(min_roll_deg >= 0 && min_roll_deg < max_roll_deg)) {
+    reason = "roll: min_spread must be in [0, 1] and min_roll_deg in [0, max_roll_deg)";
   }
   if (why != nullptr) *why = reason;
   return reason.empty();
@@ -194,9 +197,12 @@ RollEstimate EstimateRoll(const cv::Mat& bgr, const Camera& camera,
   cv::Vec3d v(smallest.x(), smallest.y(), smallest.z());
   if (v[1] < 0) v = -v;
   const double free_roll = std::atan2(-v[0], v[1]);
-  out.found = best_inliers >= options.min_segments && best_each_side >= options.min_each_side &&
-              cost_level > 0 && best_cost <= options.max_cost_fraction * cost_level &&
-              std::abs(free_roll) >= options.step_deg * kDeg;
+  const Eigen::Vector3d eigenvalues = solver.eigenvalues();
+  const bool spread = eigenvalues(2) > 0 && eigenvalues(1) >= options.min_spread * eigenvalues(2);
+  out.found = best_inliers >= options.min_segments &&
+              (best_each_side >= options.min_each_side || spread) && cost_level > 0 &&
+              best_cost <= options.max_cost_fraction * cost_level &&
+              std::abs(free_roll) >= std::max(options.min_roll_deg, options.step_deg) * kDeg;
   out.roll = out.found ? free_roll : 0.0;
   return out;
 }

@@ -20,9 +20,11 @@ struct RollEstimateOptions {
   double candidate_deg = 10;       // Segments within this of the unrolled one take part.
   double corridor_deg = 4;         // ... unless they run within this of the corridor's vanishing point.
   double min_length_px = 30;       // Shortest segment, px.
-  int min_segments = 6;            // Least agreeing segments...
-  int min_each_side = 2;           // ... and this many on each side of the corridor's vanishing point.
+  int min_segments = 5;            // Least agreeing segments...
+  int min_each_side = 2;           // ... and this many on each side of the corridor's vanishing point,
+  double min_spread = 0.015;       // ... or, on one wall, spread enough to fix the vertical vanishing point alone (see below).
   double max_cost_fraction = 0.3;  // The roll's cost at most this fraction of the cost with no roll.
+  double min_roll_deg = 0.5;       // Smaller rolls are left in: the corridor model takes them with no measurable loss.
 
   bool Check(std::string* why) const;
 };
@@ -40,7 +42,10 @@ struct RollEstimate {
 // pitch (length-weighted angles to the rolled vertical vanishing point, each capped at
 // inlier_deg) picks the agreeing segments and gates the evidence; the roll is that of the
 // vertical vanishing point fitted freely to them, so that the fit's pitch error is not taken for
-// a roll.
+// a roll. Segments on both walls fix that point; segments on one wall only fix it when their
+// planes through the camera centre spread in both directions about it: the second eigenvalue of
+// their length-weighted scatter at least min_spread of the largest (door frames at several
+// depths, not one door's two jambs).
 RollEstimate EstimateRoll(const cv::Mat& bgr, const Camera& camera,
                           const CorridorGeometry& geometry, const RollEstimateOptions& options);
 

@@ -63,6 +63,27 @@ TEST(RollEstimateTest, FindsNoneWithoutRoll) {
   }
 }
 
+// Rolled head-mounted cameras whose agreeing door frames stand on one wall only (head_s3756
+// frames 11, 12 and 18) or on one wall but one (head_s3763 frame 14): spread along that wall,
+// they fix the vertical vanishing point alone, less tightly than two walls do (0.4 degrees off on
+// frame 12).
+TEST(RollEstimateTest, FindsTheRollFromOneWallsVerticals) {
+  const struct {
+    int scene, frame;
+  } cases[] = {{8, 11}, {8, 12}, {8, 18}, {9, 14}};
+  for (const auto& c : cases) {
+    const synth::ScenePreset preset = HeadScene(c.scene, c.frame + 1);
+    const synth::CameraPose& pose = preset.poses[c.frame];
+    ASSERT_GT(std::abs(pose.roll), 2.0 * kDeg);  // The premise: a roll worth leveling.
+    synth::Frame frame;
+    ASSERT_TRUE(synth::RenderFrame(preset.scene, preset.camera, pose, &frame).ok());
+    const RollEstimate roll =
+        EstimateRoll(frame.bgr, preset.camera, frame.truth, RollEstimateOptions());
+    EXPECT_TRUE(roll.found) << "scene " << c.scene << " frame " << c.frame;
+    EXPECT_NEAR(roll.roll, pose.roll, 0.5 * kDeg) << "scene " << c.scene << " frame " << c.frame;
+  }
+}
+
 // Level cameras whose verticals stand mostly on one side (a low robot's door frames, a pillar
 // at the image's edge beside a carpet): short segments and an unbalanced pitch tilt, no roll.
 TEST(RollEstimateTest, FindsNoneOnLevelCamerasWithOneSidedVerticals) {
