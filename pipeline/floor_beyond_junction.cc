@@ -36,6 +36,21 @@ struct Sample {
   bool on_support = false;
 };
 
+// std::lround(x) for an image coordinate, without libm's call: truncated, then one step away
+// from zero when the rest (exact: x less an integer of its magnitude) is at least a half. Far
+// outside any image (or not a number): -1, outside too.
+inline int RoundHalfAway(double x) {
+  if (!(std::abs(x) < 1e9)) return -1;
+  int t = static_cast<int>(x);
+  const double rest = x - t;
+  if (rest >= 0.5) {
+    ++t;
+  } else if (rest <= -0.5) {
+    --t;
+  }
+  return t;
+}
+
 // The mean colour of the pixels from `p + near n` to `p + far n` (1 px steps, nearest pixel);
 // false when one falls outside the image.
 bool SideColour(const cv::Mat& bgr, const Eigen::Vector2d& p, const Eigen::Vector2d& n,
@@ -43,8 +58,8 @@ bool SideColour(const cv::Mat& bgr, const Eigen::Vector2d& p, const Eigen::Vecto
   cv::Vec3d sum(0, 0, 0);
   int count = 0;
   for (double d = kNear; d <= kFar + 1e-9; d += 1.0) {
-    const int u = static_cast<int>(std::lround(p.x() + d * n.x()));
-    const int v = static_cast<int>(std::lround(p.y() + d * n.y()));
+    const int u = RoundHalfAway(p.x() + d * n.x());
+    const int v = RoundHalfAway(p.y() + d * n.y());
     if (u < 0 || v < 0 || u >= bgr.cols || v >= bgr.rows) return false;
     const cv::Vec3b& c = bgr.at<cv::Vec3b>(v, u);
     sum += cv::Vec3d(c[0], c[1], c[2]);
