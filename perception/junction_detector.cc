@@ -18,6 +18,7 @@
 #include "perception/junction_selector.h"
 #include "perception/junction_support.h"
 #include "perception/line_segments.h"
+#include "perception/lower_edge.h"
 #include "perception/single_junction.h"
 
 namespace corridor {
@@ -141,7 +142,8 @@ double EdgeDensity(const cv::Mat& edges) {
   return cv::countNonZero(edges) / static_cast<double>(std::max<size_t>(1, edges.total()));
 }
 
-// The baseboard rule's band test on the floor `cues` (none when baseboard_band_contrast is 0).
+// The baseboard rule's band test on the floor `cues`, and its search for a band's lower edge
+// where no line was found for it (none when baseboard_band_contrast is 0).
 // The test refers to `cues`, which must outlive it.
 BaseboardBandTest MakeBandTest(const JunctionDetectorOptions& options, const FloorCues& cues) {
   BaseboardBandTest band;
@@ -149,6 +151,15 @@ BaseboardBandTest MakeBandTest(const JunctionDetectorOptions& options, const Flo
     band.min_contrast = options.baseboard_band_contrast;
     band.contrast = [&cues](const MergedLine& upper, const MergedLine& lower) {
       return BandContrast(cues.roi, cues.floor, upper, lower, cues.roi_top, cues.scale);
+    };
+    band.lower_edge = [&cues](const MergedLine& chosen, const Eigen::Vector2d& vp, bool left,
+                              double max_angle_deg, JunctionCandidate* foot) {
+      if (!FindLowerEdge(cues.roi, cues.roi_top, chosen, vp, left, max_angle_deg, &foot->line,
+                         &foot->foot_turn_deg)) {
+        return false;
+      }
+      foot->boundary = BoundaryScore(cues.roi, cues.floor, foot->line, cues.roi_top, cues.scale);
+      return true;
     };
   }
   return band;
@@ -315,6 +326,28 @@ Status OneSideOnly(const PairSearch& chosen, const std::vector<Eigen::Vector2d>&
   return status;
 }
 
+// The junction of a band's lower edge found from colours (`foot`), from *line, the refined line
+// above it: turned about `vp` by the foot's angle, over the foot's extent; its support every
+// pixel along that extent, where MeasureJunctionEdgePoints seeks the edge itself.
+void TurnToFoot(const JunctionCandidate& foot, const Eigen::Vector2d& vp, bool left, int height,
+                JunctionLine* line) {
+  const Eigen::Vector3d turned =
+      TurnTowardFloor(line->line, line->near_end, vp, left, foot.foot_turn_deg);
+  const Eigen::Vector2d along(turned.y(), -turned.x());
+  const Eigen::Vector2d origin = -turned.z() * turned.head<2>();
+  const double t0 = (foot.line.start - origin).dot(along), t1 = (foot.line.end - origin).dot(along);
+  const Eigen::Vector2d a = origin + std::min(t0, t1) * along, b = origin + std::max(t0, t1) * along;
+  line->line = turned;
+  line->near_end = a.y() > b.y() ? a : b;
+  line->far_end = a.y() > b.y() ? b : a;
+  const double length = (b - a).norm();
+  line->support.clear();
+  for (double t = 0; length > 0 && t <= length; t += 1) line->support.push_back(a + (b - a) * (t / length));
+  line->support_length = std::floor(length);
+  line->confidence = std::clamp(foot.boundary, 0.0, 1.0) *
+                     std::min(1.0, line->support_length / (0.25 * height));
+}
+
 // Stage: the chosen pair's final lines (and the lower partners the baseboard rule left), refined
 // on their edge pixels and refitted at full resolution, and their vanishing point.
 void RefineChosenPair(const PairSearch& chosen, const std::vector<Eigen::Vector2d>& edges,
@@ -323,10 +356,15 @@ void RefineChosenPair(const PairSearch& chosen, const std::vector<Eigen::Vector2
   const std::vector<JunctionCandidate>& left = chosen.left;
   const std::vector<JunctionCandidate>& right = chosen.right;
   const SelectedPair& pair = chosen.pair;
-  result->left = RefineJunction(left[pair.left], edges, pair.vanishing_point, true, distance,
-                                height);
-  result->right = RefineJunction(right[pair.right], edges, pair.vanishing_point, false, distance,
-                                 height);
+  // A band's lower edge found from colours is refined as the line above it (the band's strong
+  // top edge, on which the line search found it), then turned about the refined vanishing point:
+  // fitted on edge pixels itself, it would be drawn to that top edge where the band is thin.
+  const JunctionCandidate& lc = left[pair.left];
+  const JunctionCandidate& rc = right[pair.right];
+  result->left = RefineJunction(lc.foot_of >= 0 ? left[lc.foot_of] : lc, edges,
+                                pair.vanishing_point, true, distance, height);
+  result->right = RefineJunction(rc.foot_of >= 0 ? right[rc.foot_of] : rc, edges,
+                                 pair.vanishing_point, false, distance, height);
   if (pair.left_lower >= 0) {
     result->left_lower =
         RefineJunction(left[pair.left_lower], edges, pair.vanishing_point, true, distance, height);
@@ -340,7 +378,12 @@ void RefineChosenPair(const PairSearch& chosen, const std::vector<Eigen::Vector2
   for (JunctionLine* line : {&result->left, &result->right}) refit.Apply(line);
   if (result->has_left_lower) refit.Apply(&result->left_lower);
   if (result->has_right_lower) refit.Apply(&result->right_lower);
-  const Eigen::Vector3d vp = result->left.line.cross(result->right.line);
+  Eigen::Vector3d vp = result->left.line.cross(result->right.line);
+  const Eigen::Vector2d refined =
+      std::abs(vp.z()) > 1e-12 ? Eigen::Vector2d(vp.head<2>() / vp.z()) : pair.vanishing_point;
+  if (lc.foot_of >= 0) TurnToFoot(lc, refined, true, height, &result->left);
+  if (rc.foot_of >= 0) TurnToFoot(rc, refined, false, height, &result->right);
+  vp = result->left.line.cross(result->right.line);
   result->vanishing_point =
       std::abs(vp.z()) > 1e-12 ? Eigen::Vector2d(vp.head<2>() / vp.z()) : pair.vanishing_point;
 }

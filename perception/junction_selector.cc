@@ -106,15 +106,32 @@ int LowerLine(const std::vector<JunctionCandidate>& side, int chosen, const Eige
                    floor_edge);
 }
 
+// True when `band`'s edges say floor (see FloorBandTest).
+bool IsFloorBand(const BandEdges& band, const FloorBandTest& test) {
+  if (band.across_rows < test.min_across_rows) return false;
+  if (band.across >= test.min_across &&
+      band.vertical <= test.max_vertical_ratio * static_cast<double>(band.across)) {
+    return true;  // Joints across the corridor.
+  }
+  const double edges = static_cast<double>(band.across + band.vertical + band.oblique);
+  const double oblique = static_cast<double>(band.oblique);
+  return test.min_texture_density > 0 && band.pixels > 0 &&
+         edges >= test.min_texture_density * static_cast<double>(band.pixels) &&
+         oblique >= test.min_oblique_ratio * static_cast<double>(band.vertical) &&
+         oblique >= test.min_oblique_ratio * static_cast<double>(band.across);  // A carpet.
+}
+
 // When the chosen line has a partner below it that looks at least nearly as much like the floor's
 // boundary, or with a band between them unlike the floor below, the partner is the junction (the
 // chosen line is the baseboard's top). Otherwise the partner with at least half the score is kept
 // as the side's alternative; without one, the nearest line below it up to kRecessMaxAngleDeg with
 // at least kRecessMinBoundaryRatio of the score (the wall's junction when the chosen line is a
-// recess's).
-void ApplyBaseboardRule(const std::vector<JunctionCandidate>& side, const Eigen::Vector2d& vp,
-                        bool left, const BaseboardBandTest& band, int floor_edge, int* chosen,
-                        int* lower) {
+// recess's). With no line below at all, the band's lower edge from the colours
+// (BaseboardBandTest::lower_edge) may become the junction: appended to *candidates.
+void ApplyBaseboardRule(std::vector<JunctionCandidate>* candidates, const Eigen::Vector2d& vp,
+                        bool left, const BaseboardBandTest& band, const FloorBandTest& floor_band,
+                        int floor_edge, int* chosen, int* lower) {
+  const std::vector<JunctionCandidate>& side = *candidates;
   int partner = LowerLine(side, *chosen, vp, left, 0.8, floor_edge);
   if (partner < 0 && band.contrast) {
     // A baseboard as dark as the floor has a weak lower edge (and so a low boundary score), but
@@ -123,6 +140,19 @@ void ApplyBaseboardRule(const std::vector<JunctionCandidate>& side, const Eigen:
     const int weak = LowerLine(side, *chosen, vp, left, band.min_boundary_ratio, floor_edge);
     if (weak >= 0 && band.contrast(side[*chosen].line, side[weak].line) >= band.min_contrast) {
       partner = weak;
+    } else if (weak < 0 && floor_edge < 0 && band.lower_edge) {
+      // A baseboard's foot on a textured floor (a carpet) gives no line at all: the band's lower
+      // edge from the colours, under the same band test; a band whose edges say floor (tile
+      // joints across it, a carpet's texture) is floor beside a stripe or a runner's edge.
+      JunctionCandidate foot;
+      if (band.lower_edge(side[*chosen].line, vp, left, kBaseboardMaxAngleDeg, &foot) &&
+          band.contrast(side[*chosen].line, foot.line) >= band.min_contrast &&
+          !(floor_band.measure &&
+            IsFloorBand(floor_band.measure(foot.line, side[*chosen].line, vp), floor_band))) {
+        foot.foot_of = *chosen;
+        candidates->push_back(foot);
+        partner = static_cast<int>(candidates->size()) - 1;
+      }
     }
   }
   if (partner >= 0) {
@@ -138,21 +168,6 @@ void ApplyBaseboardRule(const std::vector<JunctionCandidate>& side, const Eigen:
 
 // Lines above lines: a runner's edge, its border, a stripe; more is not a floor's pattern.
 constexpr int kMaxFloorSteps = 3;
-
-// True when `band`'s edges say floor (see FloorBandTest).
-bool IsFloorBand(const BandEdges& band, const FloorBandTest& test) {
-  if (band.across_rows < test.min_across_rows) return false;
-  if (band.across >= test.min_across &&
-      band.vertical <= test.max_vertical_ratio * static_cast<double>(band.across)) {
-    return true;  // Joints across the corridor.
-  }
-  const double edges = static_cast<double>(band.across + band.vertical + band.oblique);
-  const double oblique = static_cast<double>(band.oblique);
-  return test.min_texture_density > 0 && band.pixels > 0 &&
-         edges >= test.min_texture_density * static_cast<double>(band.pixels) &&
-         oblique >= test.min_oblique_ratio * static_cast<double>(band.vertical) &&
-         oblique >= test.min_oblique_ratio * static_cast<double>(band.across);  // A carpet.
-}
 
 // The floor rule on one side: the nearest line above the chosen one (through the same vanishing
 // point) whose band with it is floor becomes the chosen line, and again from there (a stripe
@@ -415,10 +430,10 @@ SelectedPair SelectJunctionPair(std::vector<JunctionCandidate>* left_candidates,
                                      floor_edge);
   }
   if (best.left >= 0) {
-    ApplyBaseboardRule(left, best.vanishing_point, true, band, floor_edge[0], &best.left,
-                       &best.left_lower);
-    ApplyBaseboardRule(right, best.vanishing_point, false, band, floor_edge[1], &best.right,
-                       &best.right_lower);
+    ApplyBaseboardRule(left_candidates, best.vanishing_point, true, band, floor_band,
+                       floor_edge[0], &best.left, &best.left_lower);
+    ApplyBaseboardRule(right_candidates, best.vanishing_point, false, band, floor_band,
+                       floor_edge[1], &best.right, &best.right_lower);
   }
   if (best.left >= 0 && floor_band.measure && floor_band.floor_below && floor_band.floor_above) {
     ApplyFloorColourRules(best.vanishing_point, floor_band, left, &best.left, &best.left_inner,

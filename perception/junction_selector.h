@@ -15,6 +15,10 @@ namespace corridor {
 struct JunctionCandidate {
   MergedLine line;      // The merged line.
   double boundary = 0;  // BoundaryScore in [0, 1]: floor below, something else above.
+  // A band's lower edge found from colours (BaseboardBandTest::lower_edge), not by the line
+  // search: the candidate it lies below, and its turn from it about the vanishing point, degrees.
+  int foot_of = -1;
+  double foot_turn_deg = 0;
 };
 
 // The chosen pair and why.
@@ -39,6 +43,12 @@ struct BaseboardBandTest {
   std::function<double(const MergedLine& upper, const MergedLine& lower)> contrast;
   double min_contrast = 1.45;       // At least this: the band is a baseboard, the partner the junction.
   double min_boundary_ratio = 0.3;  // Partners with less of the chosen line's boundary score are not tried.
+  // Where no line below the chosen one is a partner, the band's lower edge found from the image's
+  // colours along candidate lines (FindLowerEdge, turned by up to `max_angle_deg`), with its
+  // boundary score; false when there is none. Empty: not looked for. The band test above decides.
+  std::function<bool(const MergedLine& chosen, const Eigen::Vector2d& vanishing_point, bool left,
+                     double max_angle_deg, JunctionCandidate* lower)>
+      lower_edge;
 };
 
 // The floor rule: the band between a side's chosen line and a line above it (on the wall side,
@@ -90,7 +100,10 @@ struct FloorBandTest {
 // `all_lines` are every merged line (for the vanishing-point vote); `size` is (width, height).
 // Then, per side, the baseboard rule: a lower partner of the chosen line becomes the junction when
 // its boundary score nearly matches the chosen line's, or when `band` finds the band between them
-// unlike the floor (a baseboard whose lower edge has little contrast with the floor). Before it,
+// unlike the floor (a baseboard whose lower edge has little contrast with the floor); where no
+// line lies below, the band's lower edge from the colours (`band.lower_edge`), under the same
+// band test and unless the band's edges say floor, is appended to the side's candidates and
+// chosen (JunctionCandidate::foot_of). Before it,
 // the floor rule (`floor_band`): the nearest line above the chosen one whose band is floor
 // becomes the chosen line, its boundary score the higher of the two (`floor_band.boundary`); when
 // it moved, the stripe rule from its line with the floor band's own colour

@@ -1,0 +1,136 @@
+// FindLowerEdge on drawn bands below a line through a vanishing point: a baseboard on a carpet
+// (its foot at a known turn), a stripe beside the wall with floor on both sides, a plain floor;
+// and TurnTowardFloor against hand-computed directions.
+#include <cmath>
+#include <random>
+
+#include <gtest/gtest.h>
+#include <opencv2/imgproc.hpp>
+
+#include "perception/lower_edge.h"
+
+namespace corridor {
+namespace {
+
+constexpr double kDeg = M_PI / 180.0;
+const Eigen::Vector2d kVp(320, 180);
+
+// The direction from the vanishing point of a left (right) junction `angle_deg` below the
+// horizontal.
+Eigen::Vector2d Down(double angle_deg, bool left) {
+  return Eigen::Vector2d((left ? -1 : 1) * std::cos(angle_deg * kDeg), std::sin(angle_deg * kDeg));
+}
+
+// A MergedLine from the vanishing point along `direction`, from `r0` to `r1` px.
+MergedLine LineAlong(const Eigen::Vector2d& direction, double r0, double r1) {
+  MergedLine m;
+  Eigen::Vector2d normal(-direction.y(), direction.x());
+  if (normal.y() < 0) normal = -normal;
+  m.line = Eigen::Vector3d(normal.x(), normal.y(), -normal.dot(kVp));
+  const Eigen::Vector2d ends[2] = {kVp + r0 * direction, kVp + r1 * direction};
+  SetExtentAlongLine(ends, 2, &m);
+  m.covered = m.length;
+  return m;
+}
+
+// An image whose pixels below the vanishing point are coloured by their angle below the
+// horizontal, seen from the vanishing point on the `left` (or right) half: `colour(angle, rng)`.
+template <typename Colour>
+cv::Mat DrawByAngle(bool left, Colour colour) {
+  cv::Mat image(480, 640, CV_8UC3, cv::Scalar(200, 200, 200));
+  std::mt19937 rng(7);
+  for (int v = 0; v < image.rows; ++v) {
+    for (int u = 0; u < image.cols; ++u) {
+      const double dx = (u - kVp.x()) * (left ? -1 : 1), dy = v - kVp.y();
+      if (dy <= 0 || dx <= 0) continue;
+      image.at<cv::Vec3b>(v, u) = colour(std::atan2(dy, dx) / kDeg, rng);
+    }
+  }
+  return image;
+}
+
+// A carpet: each pixel its own shade of red-brown, as textured as a real one.
+cv::Vec3b Carpet(std::mt19937& rng) {
+  std::uniform_int_distribution<int> jitter(-30, 30);
+  const int j = jitter(rng);
+  return cv::Vec3b(cv::saturate_cast<uchar>(70 + j), cv::saturate_cast<uchar>(60 + j),
+                   cv::saturate_cast<uchar>(120 + j));
+}
+
+TEST(LowerEdgeTest, FindsABaseboardsFootOnACarpet) {
+  for (const bool left : {true, false}) {
+    // Wall above 30 degrees, a grey baseboard down to 33, carpet below.
+    const cv::Mat image = DrawByAngle(left, [](double angle, std::mt19937& rng) {
+      if (angle < 30) return cv::Vec3b(180, 180, 190);
+      if (angle < 33) return cv::Vec3b(80, 80, 80);
+      return Carpet(rng);
+    });
+    const MergedLine top = LineAlong(Down(30, left), 20, 340);
+    MergedLine foot;
+    double turn = 0;
+    ASSERT_TRUE(FindLowerEdge(image, 0, top, kVp, left, 6.0, &foot, &turn)) << left;
+    EXPECT_NEAR(turn, 3.0, 0.15) << left;
+    // The foot passes through the vanishing point, along 33 degrees.
+    EXPECT_NEAR(foot.line.dot(kVp.homogeneous()), 0, 0.5);
+    EXPECT_NEAR(foot.line.dot((kVp + 300 * Down(33, left)).homogeneous()), 0, 1.0);
+    // The same image with the ROI's top rows cut off gives the same foot.
+    MergedLine cut;
+    double cut_turn = 0;
+    ASSERT_TRUE(FindLowerEdge(image.rowRange(150, 480), 150, top, kVp, left, 6.0, &cut, &cut_turn));
+    EXPECT_NEAR(cut_turn, turn, 1e-9);
+  }
+}
+
+TEST(LowerEdgeTest, AStripeBesideTheWallIsNoBand) {
+  // Floor from the junction at 30 degrees, a dark stripe from 33 to 35, floor again beyond: the
+  // floor's colour comes back beyond the stripe.
+  const cv::Mat image = DrawByAngle(true, [](double angle, std::mt19937&) {
+    if (angle < 30) return cv::Vec3b(180, 180, 190);
+    if (angle >= 33 && angle < 35) return cv::Vec3b(20, 20, 20);
+    return cv::Vec3b(90, 110, 140);
+  });
+  const MergedLine junction = LineAlong(Down(30, true), 20, 340);
+  MergedLine foot;
+  double turn = 0;
+  EXPECT_FALSE(FindLowerEdge(image, 0, junction, kVp, true, 6.0, &foot, &turn));
+}
+
+TEST(LowerEdgeTest, APlainFloorHasNoEdge) {
+  const cv::Mat image = DrawByAngle(false, [](double angle, std::mt19937&) {
+    return angle < 30 ? cv::Vec3b(180, 180, 190) : cv::Vec3b(90, 110, 140);
+  });
+  MergedLine foot;
+  double turn = 0;
+  EXPECT_FALSE(FindLowerEdge(image, 0, LineAlong(Down(30, false), 20, 340), kVp, false, 6.0,
+                             &foot, &turn));
+}
+
+TEST(LowerEdgeTest, RefusesWhatItCannotLookAt) {
+  const cv::Mat image(480, 640, CV_8UC3, cv::Scalar(0, 0, 0));
+  const MergedLine top = LineAlong(Down(30, true), 20, 340);
+  MergedLine foot;
+  double turn = 0;
+  EXPECT_FALSE(FindLowerEdge(cv::Mat(), 0, top, kVp, true, 6.0, &foot, &turn));
+  EXPECT_FALSE(FindLowerEdge(cv::Mat(480, 640, CV_8UC1), 0, top, kVp, true, 6.0, &foot, &turn));
+  EXPECT_FALSE(FindLowerEdge(image, 0, top, kVp, true, 0.0, &foot, &turn));
+  EXPECT_FALSE(FindLowerEdge(image, 0, top, Eigen::Vector2d(NAN, 0), true, 6.0, &foot, &turn));
+  // A line 3 px long near the vanishing point: its band would be under 4 px everywhere.
+  EXPECT_FALSE(FindLowerEdge(image, 0, LineAlong(Down(30, true), 1, 4), kVp, true, 6.0, &foot,
+                             &turn));
+}
+
+TEST(LowerEdgeTest, TurnsTowardTheFloor) {
+  for (const bool left : {true, false}) {
+    const MergedLine line = LineAlong(Down(30, left), 20, 340);
+    const Eigen::Vector3d turned =
+        TurnTowardFloor(line.line, kVp + 300 * Down(30, left), kVp, left, 10.0);
+    EXPECT_NEAR(std::hypot(turned.x(), turned.y()), 1.0, 1e-12);
+    EXPECT_GE(turned.y(), 0);
+    EXPECT_NEAR(turned.dot(kVp.homogeneous()), 0, 1e-9);
+    // 40 degrees below the horizontal: toward straight down.
+    EXPECT_NEAR(turned.dot((kVp + 100 * Down(40, left)).homogeneous()), 0, 1e-9) << left;
+  }
+}
+
+}  // namespace
+}  // namespace corridor
