@@ -5,6 +5,8 @@
 
 #include <Eigen/Geometry>
 
+#include "perception/lower_edge.h"
+
 namespace corridor {
 namespace {
 
@@ -121,6 +123,40 @@ bool IsFloorBand(const BandEdges& band, const FloorBandTest& test) {
          oblique >= test.min_oblique_ratio * static_cast<double>(band.across);  // A carpet.
 }
 
+// True when the floor's joints across the corridor end at `lower`, a line below `upper` on one
+// side: the strip below `lower` (as wide, about the vanishing point, as the band between them) is
+// floor by its joints (FloorBandTest), and the band has at most a quarter of the strip's rows with
+// such joints. Tile joints reach the wall's foot; a baseboard stands above them.
+bool JointsEndAt(const MergedLine& upper, const MergedLine& lower, const Eigen::Vector2d& vp,
+                 bool left, const FloorBandTest& test) {
+  if (!test.measure || test.min_across <= 0) return false;
+  const double turn = std::acos(std::clamp(DownDirection(upper, vp).dot(DownDirection(lower, vp)),
+                                           -1.0, 1.0)) *
+                      180.0 / M_PI;
+  MergedLine below = lower;
+  below.line = TurnTowardFloor(lower.line, LowEnd(lower), vp, left, turn);
+  const BandEdges strip = test.measure(below, lower, vp);
+  if (strip.across < test.min_across || strip.across_rows < test.min_across_rows ||
+      strip.vertical > test.max_vertical_ratio * static_cast<double>(strip.across)) {
+    return false;
+  }
+  const BandEdges band = test.measure(lower, upper, vp);
+  return 4 * band.across_rows <= strip.across_rows;
+}
+
+// A band less unlike the floor than the floor's own texture spread is floor-coloured.
+constexpr double kMinJointsBandContrast = 1.0;
+
+// True when the band between `upper` and `lower` (a line below it on one side) is a baseboard:
+// unlike the floor below it (BaseboardBandTest::min_contrast), or, less unlike it than that but
+// more than the floor's own texture, with the floor's joints ending at `lower` (JointsEndAt).
+bool BandIsBaseboard(const MergedLine& upper, const MergedLine& lower, const Eigen::Vector2d& vp,
+                     bool left, const BaseboardBandTest& band, const FloorBandTest& floor_band) {
+  const double contrast = band.contrast(upper, lower);
+  return contrast >= band.min_contrast ||
+         (contrast >= kMinJointsBandContrast && JointsEndAt(upper, lower, vp, left, floor_band));
+}
+
 // When the chosen line has a partner below it that looks at least nearly as much like the floor's
 // boundary, or with a band between them unlike the floor below, the partner is the junction (the
 // chosen line is the baseboard's top). Otherwise the partner with at least half the score is kept
@@ -135,10 +171,12 @@ void ApplyBaseboardRule(std::vector<JunctionCandidate>* candidates, const Eigen:
   int partner = LowerLine(side, *chosen, vp, left, 0.8, floor_edge);
   if (partner < 0 && band.contrast) {
     // A baseboard as dark as the floor has a weak lower edge (and so a low boundary score), but
-    // the band between its edges is unlike the floor; between a junction and a grout line, or
-    // a glossy floor's faint reflection of the baseboard, the band is floor.
+    // the band between its edges is unlike the floor, or, nearly floor-coloured, has none of the
+    // floor's joints, which end at its foot (BandIsBaseboard); between a junction and a grout
+    // line, or a glossy floor's faint reflection of the baseboard, the band is floor.
     const int weak = LowerLine(side, *chosen, vp, left, band.min_boundary_ratio, floor_edge);
-    if (weak >= 0 && band.contrast(side[*chosen].line, side[weak].line) >= band.min_contrast) {
+    if (weak >= 0 && BandIsBaseboard(side[*chosen].line, side[weak].line, vp, left, band,
+                                     floor_band)) {
       partner = weak;
     } else if (weak < 0 && floor_edge < 0 && band.lower_edge) {
       // A baseboard's foot on a textured floor (a carpet) gives no line at all: the band's lower
