@@ -79,7 +79,13 @@ bool SecondLook(const EdgeSegments& found, const SegmentOptions& segment_options
   second.right.insert(second.right.end(), first->right.begin(), first->right.end());
   SelectPair(size, band, cues, &second);
   const SelectedPair& p = second.pair;
-  const bool left_new = p.left < new_left, right_new = p.right < new_right;
+  // A band's lower edge found from colours is as new as the line above it.
+  const auto is_new = [](const std::vector<JunctionCandidate>& side, int chosen, int count) {
+    const int line = chosen >= 0 && side[chosen].foot_of >= 0 ? side[chosen].foot_of : chosen;
+    return line < count;
+  };
+  const bool left_new = is_new(second.left, p.left, new_left);
+  const bool right_new = is_new(second.right, p.right, new_right);
   if (p.left >= 0 && left_new != right_new &&
       (left_new ? second.right[p.right] : second.left[p.left]).boundary >=
           options.relaxed_min_partner_boundary) {

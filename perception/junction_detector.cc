@@ -328,8 +328,9 @@ Status OneSideOnly(const PairSearch& chosen, const std::vector<Eigen::Vector2d>&
 
 // The junction of a band's lower edge found from colours (`foot`), from *line, the refined line
 // above it: turned about `vp` by the foot's angle, over the foot's extent; its support every
-// pixel along that extent, where MeasureJunctionEdgePoints seeks the edge itself.
-void TurnToFoot(const JunctionCandidate& foot, const Eigen::Vector2d& vp, bool left, int height,
+// pixel along that extent, where MeasureJunctionEdgePoints seeks the edge itself. Its support
+// length and confidence stay the line's: the line search's evidence, which the band test moved.
+void TurnToFoot(const JunctionCandidate& foot, const Eigen::Vector2d& vp, bool left,
                 JunctionLine* line) {
   const Eigen::Vector3d turned =
       TurnTowardFloor(line->line, line->near_end, vp, left, foot.foot_turn_deg);
@@ -343,9 +344,6 @@ void TurnToFoot(const JunctionCandidate& foot, const Eigen::Vector2d& vp, bool l
   const double length = (b - a).norm();
   line->support.clear();
   for (double t = 0; length > 0 && t <= length; t += 1) line->support.push_back(a + (b - a) * (t / length));
-  line->support_length = std::floor(length);
-  line->confidence = std::clamp(foot.boundary, 0.0, 1.0) *
-                     std::min(1.0, line->support_length / (0.25 * height));
 }
 
 // Stage: the chosen pair's final lines (and the lower partners the baseboard rule left), refined
@@ -381,8 +379,8 @@ void RefineChosenPair(const PairSearch& chosen, const std::vector<Eigen::Vector2
   Eigen::Vector3d vp = result->left.line.cross(result->right.line);
   const Eigen::Vector2d refined =
       std::abs(vp.z()) > 1e-12 ? Eigen::Vector2d(vp.head<2>() / vp.z()) : pair.vanishing_point;
-  if (lc.foot_of >= 0) TurnToFoot(lc, refined, true, height, &result->left);
-  if (rc.foot_of >= 0) TurnToFoot(rc, refined, false, height, &result->right);
+  if (lc.foot_of >= 0) TurnToFoot(lc, refined, true, &result->left);
+  if (rc.foot_of >= 0) TurnToFoot(rc, refined, false, &result->right);
   vp = result->left.line.cross(result->right.line);
   result->vanishing_point =
       std::abs(vp.z()) > 1e-12 ? Eigen::Vector2d(vp.head<2>() / vp.z()) : pair.vanishing_point;

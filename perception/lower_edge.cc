@@ -15,6 +15,9 @@ constexpr double kMinBandPx = 4.0;     // The thinnest band looked at, px at the
 constexpr double kNearPart = 0.65;
 // A profile colour nearer the band's than this fraction of the band's edge step is the band's.
 constexpr double kReappears = 0.3;
+// The largest fraction of points whose band middle looks like the floor beyond the band: a
+// baseboard is the band at most points.
+constexpr double kMaxFloorLikeBand = 0.5;
 
 Eigen::Vector2d LowEnd(const MergedLine& line) {
   return line.start.y() > line.end.y() ? line.start : line.end;
@@ -69,17 +72,22 @@ bool FindLowerEdge(const cv::Mat& roi, int roi_top, const MergedLine& chosen,
   const int view_last = std::min(2 * last, static_cast<int>(45.0 / kAngleStepDeg));
   thread_local std::vector<cv::Vec3d> profile;
   profile.assign(static_cast<size_t>(view_last) + 1, cv::Vec3d(0, 0, 0));
-  for (int k = 0; k <= view_last; ++k) {
+  // The colour at distance r from the vanishing point on candidate k.
+  const auto colour_at = [&](const Eigen::Vector2d& d, double r) {
+    const Eigen::Vector2d p = vp + r * d;
+    const int u = std::clamp(static_cast<int>(std::lround(p.x())), 0, roi.cols - 1);
+    const int v = std::clamp(static_cast<int>(std::lround(p.y())) - roi_top, 0, roi.rows - 1);
+    const cv::Vec3b& c = roi.at<cv::Vec3b>(v, u);
+    return cv::Vec3d(c[0], c[1], c[2]);
+  };
+  const auto direction = [&](double k) {
     const double a = k * kAngleStepDeg * deg;
-    const Eigen::Vector2d d = std::cos(a) * down + std::sin(a) * inward;
+    return Eigen::Vector2d(std::cos(a) * down + std::sin(a) * inward);
+  };
+  for (int k = 0; k <= view_last; ++k) {
+    const Eigen::Vector2d d = direction(k);
     cv::Vec3d sum(0, 0, 0);
-    for (const double r : radii) {
-      const Eigen::Vector2d p = vp + r * d;
-      const int u = std::clamp(static_cast<int>(std::lround(p.x())), 0, roi.cols - 1);
-      const int v = std::clamp(static_cast<int>(std::lround(p.y())) - roi_top, 0, roi.rows - 1);
-      const cv::Vec3b& c = roi.at<cv::Vec3b>(v, u);
-      sum += cv::Vec3d(c[0], c[1], c[2]);
-    }
+    for (const double r : radii) sum += colour_at(d, r);
     profile[static_cast<size_t>(k)] = sum / static_cast<double>(radii.size());
   }
   // The step at each candidate: the two candidates beyond against the two before.
@@ -106,6 +114,19 @@ bool FindLowerEdge(const cv::Mat& roi, int roi_top, const MergedLine& chosen,
   for (int k = best + 6; k <= view_last; ++k) {
     if (cv::norm(profile[k] - band, cv::NORM_L1) < kReappears * edge) return false;
   }
+  // A baseboard runs all along the wall: the band's middle looks like the band, not like the floor
+  // beyond it, at most points; boxes or door bottoms standing across the junction darken the
+  // floor at some points only.
+  const double mid = 0.5 * (first + best);
+  const Eigen::Vector2d middle[3] = {direction(mid - 1), direction(mid), direction(mid + 1)};
+  int floor_like = 0;
+  for (const double r : radii) {
+    const cv::Vec3d c = (colour_at(middle[0], r) + colour_at(middle[1], r) +
+                         colour_at(middle[2], r)) /
+                        3.0;
+    floor_like += cv::norm(c - beyond, cv::NORM_L1) < cv::norm(c - band, cv::NORM_L1);
+  }
+  if (floor_like > kMaxFloorLikeBand * static_cast<double>(radii.size())) return false;
   // The edge between candidates: the peak of a parabola through the steps around the largest.
   double peak = best;
   if (best - 1 >= 2 && best + 1 <= view_last - 2) {
