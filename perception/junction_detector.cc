@@ -154,12 +154,11 @@ BaseboardBandTest MakeBandTest(const JunctionDetectorOptions& options, const Flo
     };
     band.lower_edge = [&cues](const MergedLine& chosen, const Eigen::Vector2d& vp, bool left,
                               double max_angle_deg, JunctionCandidate* foot) {
-      if (!FindLowerEdge(cues.roi, cues.roi_top, chosen, vp, left, max_angle_deg, &foot->line,
-                         &foot->foot_turn_deg)) {
-        return false;
-      }
-      foot->boundary = BoundaryScore(cues.roi, cues.floor, foot->line, cues.roi_top, cues.scale);
-      return true;
+      return FindLowerEdge(cues.roi, cues.roi_top, chosen, vp, left, max_angle_deg, &foot->line,
+                           &foot->foot_turn_deg);
+    };
+    band.boundary = [&cues](const MergedLine& line) {
+      return BoundaryScore(cues.roi, cues.floor, line, cues.roi_top, cues.scale);
     };
   }
   return band;

@@ -188,6 +188,7 @@ void ApplyBaseboardRule(std::vector<JunctionCandidate>* candidates, const Eigen:
           !(floor_band.measure &&
             IsFloorBand(floor_band.measure(foot.line, side[*chosen].line, vp), floor_band))) {
         foot.foot_of = *chosen;
+        foot.boundary = band.boundary ? band.boundary(foot.line) : 0.0;
         candidates->push_back(foot);
         partner = static_cast<int>(candidates->size()) - 1;
       }

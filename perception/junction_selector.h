@@ -44,11 +44,13 @@ struct BaseboardBandTest {
   double min_contrast = 1.45;       // At least this: the band is a baseboard, the partner the junction.
   double min_boundary_ratio = 0.3;  // Partners with less of the chosen line's boundary score are not tried.
   // Where no line below the chosen one is a partner, the band's lower edge found from the image's
-  // colours along candidate lines (FindLowerEdge, turned by up to `max_angle_deg`), with its
-  // boundary score; false when there is none. Empty: not looked for. The band test above decides.
+  // colours along candidate lines (FindLowerEdge, turned by up to `max_angle_deg`); false when
+  // there is none. Empty: not looked for. The band test above decides.
   std::function<bool(const MergedLine& chosen, const Eigen::Vector2d& vanishing_point, bool left,
                      double max_angle_deg, JunctionCandidate* lower)>
       lower_edge;
+  // The boundary score (BoundaryScore) of a lower edge taken; empty: 0.
+  std::function<double(const MergedLine& line)> boundary;
 };
 
 // The floor rule: the band between a side's chosen line and a line above it (on the wall side,

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <vector>
 
+#include "core/round_half_away.h"
+
 namespace corridor {
 namespace {
 
@@ -75,8 +77,8 @@ bool FindLowerEdge(const cv::Mat& roi, int roi_top, const MergedLine& chosen,
   // The colour at distance r from the vanishing point on candidate k.
   const auto colour_at = [&](const Eigen::Vector2d& d, double r) {
     const Eigen::Vector2d p = vp + r * d;
-    const int u = std::clamp(static_cast<int>(std::lround(p.x())), 0, roi.cols - 1);
-    const int v = std::clamp(static_cast<int>(std::lround(p.y())) - roi_top, 0, roi.rows - 1);
+    const int u = std::clamp(RoundHalfAway(p.x()), 0, roi.cols - 1);
+    const int v = std::clamp(RoundHalfAway(p.y()) - roi_top, 0, roi.rows - 1);
     const cv::Vec3b& c = roi.at<cv::Vec3b>(v, u);
     return cv::Vec3d(c[0], c[1], c[2]);
   };

@@ -10,6 +10,7 @@
 #endif
 
 #include "core/cpu_features.h"
+#include "core/round_half_away.h"
 #include "corridor_depth/corridor_frame.h"
 
 namespace corridor {
@@ -63,14 +64,6 @@ __attribute__((target("avx2"))) inline void SumSobelAvx2(const cv::Mat& bgr, con
   *gy = _mm_extract_epi32(sums, 1);
 }
 #endif
-
-// std::lround(x) for |x| < 2^31, inlined: truncation, then the exact remainder decides (x less
-// its truncation is exact in double), half away from zero as lround rounds.
-inline int RoundHalfAway(double x) {
-  const int i = static_cast<int>(x);
-  const double rest = x - static_cast<double>(i);
-  return i + (rest >= 0.5) - (rest <= -0.5);
-}
 
 // The band from the point along `direction` (from 2 px on, its length): the fraction of it on an
 // edge running along `up` (within 1 px across, its gradient across `up` at least `threshold` and

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <vector>
 
+#include "core/round_half_away.h"
 #include "corridor_depth/corridor_frame.h"
 
 namespace corridor {
@@ -35,21 +36,6 @@ struct Sample {
   double depth = -1;
   bool on_support = false;
 };
-
-// std::lround(x) for an image coordinate, without libm's call: truncated, then one step away
-// from zero when the rest (exact: x less an integer of its magnitude) is at least a half. Far
-// outside any image (or not a number): -1, outside too.
-inline int RoundHalfAway(double x) {
-  if (!(std::abs(x) < 1e9)) return -1;
-  int t = static_cast<int>(x);
-  const double rest = x - t;
-  if (rest >= 0.5) {
-    ++t;
-  } else if (rest <= -0.5) {
-    --t;
-  }
-  return t;
-}
 
 // The mean colour of the pixels from `p + near n` to `p + far n` (1 px steps, nearest pixel);
 // false when one falls outside the image.
