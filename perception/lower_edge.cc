@@ -29,6 +29,14 @@ bool Inside(const cv::Mat& roi, int roi_top, const Eigen::Vector2d& p) {
   return p.x() >= 0 && p.x() <= roi.cols - 1 && p.y() >= roi_top && p.y() <= roi_top + roi.rows - 1;
 }
 
+// `down` (a unit direction from the vanishing point along a junction) turned toward the floor by
+// `angle` radians: toward straight down, i.e. to the right of a left junction.
+Eigen::Vector2d Turned(const Eigen::Vector2d& down, bool left, double angle) {
+  const Eigen::Vector2d inward =
+      left ? Eigen::Vector2d(down.y(), -down.x()) : Eigen::Vector2d(-down.y(), down.x());
+  return std::cos(angle) * down + std::sin(angle) * inward;
+}
+
 }  // namespace
 
 bool FindLowerEdge(const cv::Mat& roi, int roi_top, const MergedLine& chosen,
@@ -43,9 +51,6 @@ bool FindLowerEdge(const cv::Mat& roi, int roi_top, const MergedLine& chosen,
   const double reach = down.norm();
   if (!(reach > 1)) return false;
   down /= reach;
-  // Turned toward the floor: toward straight down, i.e. to the right of a left junction.
-  const Eigen::Vector2d inward = left ? Eigen::Vector2d(down.y(), -down.x())
-                                      : Eigen::Vector2d(-down.y(), down.x());
   const double ra = (chosen.start - vp).dot(down), rb = (chosen.end - vp).dot(down);
   const double r_far = std::max(0.0, std::min(ra, rb)), r_near = std::max(ra, rb);
   if (!(r_near > r_far + 1)) return false;
@@ -57,8 +62,7 @@ bool FindLowerEdge(const cv::Mat& roi, int roi_top, const MergedLine& chosen,
   if (first < 2 || first + 2 > last - 2) return false;
   // The sample distances from the vanishing point whose points stay inside the image from the
   // chosen line to the farthest candidate.
-  const Eigen::Vector2d far_turn = std::cos(last * kAngleStepDeg * deg) * down +
-                                   std::sin(last * kAngleStepDeg * deg) * inward;
+  const Eigen::Vector2d far_turn = Turned(down, left, last * kAngleStepDeg * deg);
   const double r_start = std::max(r_far, r_near - kNearPart * (r_near - r_far));
   thread_local std::vector<double> radii;
   radii.clear();
@@ -84,7 +88,7 @@ bool FindLowerEdge(const cv::Mat& roi, int roi_top, const MergedLine& chosen,
   };
   const auto direction = [&](double k) {
     const double a = k * kAngleStepDeg * deg;
-    return Eigen::Vector2d(std::cos(a) * down + std::sin(a) * inward);
+    return Turned(down, left, a);
   };
   for (int k = 0; k <= view_last; ++k) {
     const Eigen::Vector2d d = direction(k);
@@ -137,13 +141,8 @@ bool FindLowerEdge(const cv::Mat& roi, int roi_top, const MergedLine& chosen,
     if (curvature < 0) peak += std::clamp(0.5 * (s0 - s2) / curvature, -0.5, 0.5);
   }
   const double a = peak * kAngleStepDeg * deg;
-  const Eigen::Vector2d d = std::cos(a) * down + std::sin(a) * inward;
-  Eigen::Vector2d normal(-d.y(), d.x());
-  if (normal.y() < 0) normal = -normal;
-  lower->line = Eigen::Vector3d(normal.x(), normal.y(), -normal.dot(vp));
-  const Eigen::Vector2d ends[2] = {vp + r_far * d, vp + r_near * d};
-  SetExtentAlongLine(ends, 2, lower);
-  lower->covered = lower->length;
+  const Eigen::Vector2d d = Turned(down, left, a);
+  *lower = LineThrough(vp + r_far * d, vp + r_near * d);
   *turn_deg = peak * kAngleStepDeg;
   return true;
 }
@@ -154,13 +153,9 @@ Eigen::Vector3d TurnTowardFloor(const Eigen::Vector3d& line, const Eigen::Vector
   // The line's direction from the vanishing point toward the near point.
   Eigen::Vector2d down(line.y(), -line.x());
   if (down.dot(near_point - vanishing_point) < 0) down = -down;
-  const Eigen::Vector2d inward = left ? Eigen::Vector2d(down.y(), -down.x())
-                                      : Eigen::Vector2d(-down.y(), down.x());
-  const double a = turn_deg * M_PI / 180.0;
-  const Eigen::Vector2d d = std::cos(a) * down + std::sin(a) * inward;
-  Eigen::Vector2d normal(-d.y(), d.x());
-  if (normal.y() < 0) normal = -normal;
-  return Eigen::Vector3d(normal.x(), normal.y(), -normal.dot(vanishing_point));
+  return LineThrough(vanishing_point,
+                     vanishing_point + Turned(down, left, turn_deg * M_PI / 180.0))
+      .line;
 }
 
 }  // namespace corridor

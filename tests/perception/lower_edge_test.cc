@@ -23,14 +23,7 @@ Eigen::Vector2d Down(double angle_deg, bool left) {
 
 // A MergedLine from the vanishing point along `direction`, from `r0` to `r1` px.
 MergedLine LineAlong(const Eigen::Vector2d& direction, double r0, double r1) {
-  MergedLine m;
-  Eigen::Vector2d normal(-direction.y(), direction.x());
-  if (normal.y() < 0) normal = -normal;
-  m.line = Eigen::Vector3d(normal.x(), normal.y(), -normal.dot(kVp));
-  const Eigen::Vector2d ends[2] = {kVp + r0 * direction, kVp + r1 * direction};
-  SetExtentAlongLine(ends, 2, &m);
-  m.covered = m.length;
-  return m;
+  return LineThrough(kVp + r0 * direction, kVp + r1 * direction);
 }
 
 // An image whose pixels below the vanishing point are coloured by their angle below the
