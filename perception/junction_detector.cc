@@ -331,13 +331,12 @@ Status OneSideOnly(const PairSearch& chosen, const std::vector<Eigen::Vector2d>&
 // length and confidence stay the line's: the line search's evidence, which the band test moved.
 void TurnToFoot(const JunctionCandidate& foot, const Eigen::Vector2d& vp, bool left,
                 JunctionLine* line) {
-  const Eigen::Vector3d turned =
-      TurnTowardFloor(line->line, line->near_end, vp, left, foot.foot_turn_deg);
-  const Eigen::Vector2d along(turned.y(), -turned.x());
-  const Eigen::Vector2d origin = -turned.z() * turned.head<2>();
-  const double t0 = (foot.line.start - origin).dot(along), t1 = (foot.line.end - origin).dot(along);
-  const Eigen::Vector2d a = origin + std::min(t0, t1) * along, b = origin + std::max(t0, t1) * along;
-  line->line = turned;
+  MergedLine turned;
+  turned.line = TurnTowardFloor(line->line, line->near_end, vp, left, foot.foot_turn_deg);
+  const Eigen::Vector2d ends[2] = {foot.line.start, foot.line.end};
+  SetExtentAlongLine(ends, 2, &turned);
+  const Eigen::Vector2d a = turned.start, b = turned.end;
+  line->line = turned.line;
   line->near_end = a.y() > b.y() ? a : b;
   line->far_end = a.y() > b.y() ? b : a;
   const double length = (b - a).norm();

@@ -40,11 +40,6 @@ bool PassesThrough(const MergedLine& line, const Eigen::Vector2d& vp) {
   return off <= std::max(3.0, 0.02 * reach);
 }
 
-// The lower end of a line (its end nearer the image bottom).
-Eigen::Vector2d LowEnd(const MergedLine& line) {
-  return line.start.y() > line.end.y() ? line.start : line.end;
-}
-
 // Direction (unit) from the vanishing point down along the line.
 Eigen::Vector2d DownDirection(const MergedLine& line, const Eigen::Vector2d& vp) {
   return (LowEnd(line) - vp).normalized();

@@ -112,6 +112,10 @@ std::vector<cv::Vec4f> HoughSegments(const EdgeSegments& found, const SegmentOpt
   return segments;
 }
 
+Eigen::Vector2d LowEnd(const MergedLine& line) {
+  return line.start.y() > line.end.y() ? line.start : line.end;
+}
+
 MergedLine LineThrough(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
   MergedLine m;
   m.line = Normalise(Eigen::Vector3d(a.x(), a.y(), 1).cross(Eigen::Vector3d(b.x(), b.y(), 1)));

@@ -65,4 +65,7 @@ void MergeSegments(const std::vector<cv::Vec4f>& segments, double angle_deg, dou
 // A MergedLine through two points (normalised, normal pointing down, extent from the points).
 MergedLine LineThrough(const Eigen::Vector2d& a, const Eigen::Vector2d& b);
 
+// The end of a line's extent nearer the image bottom.
+Eigen::Vector2d LowEnd(const MergedLine& line);
+
 }  // namespace corridor

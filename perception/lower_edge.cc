@@ -21,10 +21,6 @@ constexpr double kReappears = 0.3;
 // baseboard is the band at most points.
 constexpr double kMaxFloorLikeBand = 0.5;
 
-Eigen::Vector2d LowEnd(const MergedLine& line) {
-  return line.start.y() > line.end.y() ? line.start : line.end;
-}
-
 bool Inside(const cv::Mat& roi, int roi_top, const Eigen::Vector2d& p) {
   return p.x() >= 0 && p.x() <= roi.cols - 1 && p.y() >= roi_top && p.y() <= roi_top + roi.rows - 1;
 }
