@@ -5,8 +5,10 @@
 #include <utility>
 #include <vector>
 
-#include <Eigen/Eigenvalues>
+#include <Eigen/Core>
+#include <Eigen/Geometry>
 
+#include "core/symmetric_eigen.h"
 #include "corridor_depth/corridor_frame.h"
 #include "corridor_depth/line_inliers.h"
 #include "corridor_depth/virtual_camera.h"
@@ -94,8 +96,7 @@ bool FitImageLine(const std::vector<Eigen::Vector2d>& points, const std::vector<
     scatter += weight(i) * (points[i] - mean) * (points[i] - mean).transpose();
   }
   if (scatter.trace() <= 1e-12) return false;
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(scatter);
-  const Eigen::Vector2d normal = eig.eigenvectors().col(0);  // Smallest eigenvalue.
+  const Eigen::Vector2d normal = SmallestEigenvector(scatter);
   *line = Eigen::Vector3d(normal.x(), normal.y(), -normal.dot(mean));
   return true;
 }

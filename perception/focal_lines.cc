@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cmath>
 
-#include <Eigen/Dense>
+#include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include <opencv2/imgproc.hpp>
 
+#include "core/symmetric_eigen.h"
 #include "perception/line_segments.h"
 
 namespace corridor {
@@ -126,8 +128,7 @@ bool RefitSubpixel(const cv::Mat& dx, const cv::Mat& dy, double reach, MergedLin
     mean /= static_cast<double>(points.size());
     Eigen::Matrix2d scatter = Eigen::Matrix2d::Zero();
     for (const auto& q : points) scatter += (q - mean) * (q - mean).transpose();
-    const Eigen::Vector2d normal =
-        Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(scatter).eigenvectors().col(0);
+    const Eigen::Vector2d normal = SmallestEigenvector(scatter);
     const MergedLine refit = LineThrough(m->start - normal.dot(m->start - mean) * normal,
                                          m->end - normal.dot(m->end - mean) * normal);
     if (!refit.line.allFinite() || refit.line.head<2>().dot(m->line.head<2>()) < 0.99) {

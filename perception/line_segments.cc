@@ -3,10 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
-#include <Eigen/Eigenvalues>
+#include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <opencv2/imgproc.hpp>
 
+#include "core/symmetric_eigen.h"
 #include "kernels/binomial_blur.h"
 #include "kernels/canny_edges.h"
 #include "kernels/color_gradient.h"
@@ -190,8 +191,7 @@ void MergeSegments(const std::vector<cv::Vec4f>& segments, double angle_deg, dou
       const Eigen::Vector2d d = members[group][k] - mean;
       scatter += weights[group][k] * d * d.transpose();
     }
-    Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(scatter);
-    const Eigen::Vector2d normal = eig.eigenvectors().col(0);
+    const Eigen::Vector2d normal = SmallestEigenvector(scatter);
     MergedLine& m = merged[group];
     m.line = Normalise(Eigen::Vector3d(normal.x(), normal.y(), -normal.dot(mean)));
     const double covered = m.covered + candidate.length;
