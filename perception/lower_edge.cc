@@ -17,6 +17,9 @@ constexpr double kMinBandPx = 4.0;     // The thinnest band looked at, px at the
 constexpr double kNearPart = 0.65;
 // A profile colour nearer the band's than this fraction of the band's edge step is the band's.
 constexpr double kReappears = 0.3;
+// Over this many candidates in a row: a thin line beyond (a grout joint along the wall) darker or
+// lighter than the band passes through the band's colour on its way, which is not the band.
+constexpr int kReappearsOver = 5;
 // The largest fraction of points whose band middle looks like the floor beyond the band: a
 // baseboard is the band at most points.
 constexpr double kMaxFloorLikeBand = 0.5;
@@ -113,8 +116,10 @@ bool FindLowerEdge(const cv::Mat& roi, int roi_top, const MergedLine& chosen,
   for (int k = best + 3; k <= best + 5; ++k) beyond += profile[std::min(k, view_last)];
   beyond /= 3.0;
   const double edge = cv::norm(beyond - band, cv::NORM_L1);
+  int run = 0;
   for (int k = best + 6; k <= view_last; ++k) {
-    if (cv::norm(profile[k] - band, cv::NORM_L1) < kReappears * edge) return false;
+    run = cv::norm(profile[k] - band, cv::NORM_L1) < kReappears * edge ? run + 1 : 0;
+    if (run >= kReappearsOver) return false;
   }
   // A baseboard runs all along the wall: the band's middle looks like the band, not like the floor
   // beyond it, at most points; boxes or door bottoms standing across the junction darken the

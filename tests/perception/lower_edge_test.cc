@@ -74,6 +74,27 @@ TEST(LowerEdgeTest, FindsABaseboardsFootOnACarpet) {
   }
 }
 
+TEST(LowerEdgeTest, AThinJointBeyondTheFootIsNotTheBandAgain) {
+  for (const bool left : {true, false}) {
+    // A dark baseboard from 30 to 33 degrees on a slightly lighter tiled floor, with a thin
+    // joint along the wall beyond the search (37.6 degrees) darker than the baseboard: on its way
+    // down and up the profile passes through the baseboard's colour, but only for a step or two.
+    const cv::Mat image = DrawByAngle(left, [](double angle, std::mt19937&) {
+      if (angle < 30) return cv::Vec3b(90, 90, 170);
+      if (angle < 33) return cv::Vec3b(70, 76, 70);
+      // The joint, blurred as a camera sees it: 25 levels darker at its middle.
+      const double d = (angle - 37.6) / 0.4;
+      const int dip = static_cast<int>(std::lround(25 * std::exp(-d * d)));
+      return cv::Vec3b(84 - dip, 92 - dip, 84 - dip);
+    });
+    const MergedLine top = LineAlong(Down(30, left), 20, 340);
+    MergedLine foot;
+    double turn = 0;
+    ASSERT_TRUE(FindLowerEdge(image, 0, top, kVp, left, 6.0, &foot, &turn)) << left;
+    EXPECT_NEAR(turn, 3.0, 0.15) << left;
+  }
+}
+
 TEST(LowerEdgeTest, AStripeBesideTheWallIsNoBand) {
   // Floor from the junction at 30 degrees, a dark stripe from 33 to 35, floor again beyond: the
   // floor's colour comes back beyond the stripe.
