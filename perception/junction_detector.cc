@@ -325,25 +325,6 @@ Status OneSideOnly(const PairSearch& chosen, const std::vector<Eigen::Vector2d>&
   return status;
 }
 
-// The junction of a band's lower edge found from colours (`foot`), from *line, the refined line
-// above it: turned about `vp` by the foot's angle, over the foot's extent; its support every
-// pixel along that extent, where MeasureJunctionEdgePoints seeks the edge itself. Its support
-// length and confidence stay the line's: the line search's evidence, which the band test moved.
-void TurnToFoot(const JunctionCandidate& foot, const Eigen::Vector2d& vp, bool left,
-                JunctionLine* line) {
-  MergedLine turned;
-  turned.line = TurnTowardFloor(line->line, line->near_end, vp, left, foot.foot_turn_deg);
-  const Eigen::Vector2d ends[2] = {foot.line.start, foot.line.end};
-  SetExtentAlongLine(ends, 2, &turned);
-  const Eigen::Vector2d a = turned.start, b = turned.end;
-  line->line = turned.line;
-  line->near_end = a.y() > b.y() ? a : b;
-  line->far_end = a.y() > b.y() ? b : a;
-  const double length = (b - a).norm();
-  line->support.clear();
-  for (double t = 0; length > 0 && t <= length; t += 1) line->support.push_back(a + (b - a) * (t / length));
-}
-
 // Stage: the chosen pair's final lines (and the lower partners the baseboard rule left), refined
 // on their edge pixels and refitted at full resolution, and their vanishing point.
 void RefineChosenPair(const PairSearch& chosen, const std::vector<Eigen::Vector2d>& edges,
@@ -377,8 +358,10 @@ void RefineChosenPair(const PairSearch& chosen, const std::vector<Eigen::Vector2
   Eigen::Vector3d vp = result->left.line.cross(result->right.line);
   const Eigen::Vector2d refined =
       std::abs(vp.z()) > 1e-12 ? Eigen::Vector2d(vp.head<2>() / vp.z()) : pair.vanishing_point;
-  if (lc.foot_of >= 0) TurnToFoot(lc, refined, true, &result->left);
-  if (rc.foot_of >= 0) TurnToFoot(rc, refined, false, &result->right);
+  if (lc.foot_of >= 0) TurnJunctionToFoot(lc.line, lc.foot_turn_deg, refined, true, &result->left);
+  if (rc.foot_of >= 0) {
+    TurnJunctionToFoot(rc.line, rc.foot_turn_deg, refined, false, &result->right);
+  }
   vp = result->left.line.cross(result->right.line);
   result->vanishing_point =
       std::abs(vp.z()) > 1e-12 ? Eigen::Vector2d(vp.head<2>() / vp.z()) : pair.vanishing_point;

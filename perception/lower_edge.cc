@@ -159,4 +159,21 @@ Eigen::Vector3d TurnTowardFloor(const Eigen::Vector3d& line, const Eigen::Vector
       .line;
 }
 
+void TurnJunctionToFoot(const MergedLine& foot, double turn_deg,
+                        const Eigen::Vector2d& vanishing_point, bool left, JunctionLine* line) {
+  MergedLine turned;
+  turned.line = TurnTowardFloor(line->line, line->near_end, vanishing_point, left, turn_deg);
+  const Eigen::Vector2d ends[2] = {foot.start, foot.end};
+  SetExtentAlongLine(ends, 2, &turned);
+  const Eigen::Vector2d a = turned.start, b = turned.end;
+  line->line = turned.line;
+  line->near_end = a.y() > b.y() ? a : b;
+  line->far_end = a.y() > b.y() ? b : a;
+  const double length = (b - a).norm();
+  line->support.clear();
+  for (double t = 0; length > 0 && t <= length; t += 1) {
+    line->support.push_back(a + (b - a) * (t / length));
+  }
+}
+
 }  // namespace corridor

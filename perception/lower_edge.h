@@ -3,6 +3,7 @@
 #include <Eigen/Core>
 #include <opencv2/core.hpp>
 
+#include "corridor_depth/junction_lines.h"
 #include "perception/line_segments.h"
 
 namespace corridor {
@@ -29,5 +30,13 @@ bool FindLowerEdge(const cv::Mat& roi, int roi_top, const MergedLine& chosen,
 Eigen::Vector3d TurnTowardFloor(const Eigen::Vector3d& line, const Eigen::Vector2d& near_point,
                                 const Eigen::Vector2d& vanishing_point, bool left,
                                 double turn_deg);
+
+// The junction of a band's lower edge found by FindLowerEdge, from *line, the junction above it
+// (raw pixels): turned about `vanishing_point` by `turn_deg`, over the extent of `foot`; its
+// support every pixel along that extent, where MeasureJunctionEdgePoints seeks the edge itself.
+// Its support length and confidence stay the line's: the line search's evidence, which the band
+// test moved.
+void TurnJunctionToFoot(const MergedLine& foot, double turn_deg,
+                        const Eigen::Vector2d& vanishing_point, bool left, JunctionLine* line);
 
 }  // namespace corridor

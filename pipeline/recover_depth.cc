@@ -240,7 +240,8 @@ Status DepthRecoverer::ReconstructAsSeen(const Camera& camera, RecoverDepthResul
     if (!status.ok()) return finish(status);
     bool lower_taken = false;
     if (options_.ceiling_checks_baseboards && result->junctions.status.ok()) {
-      lower_taken = CheckBaseboards(checks, &geometry, result);
+      lower_taken = CheckBaseboards(checks, &geometry, result) ||
+                    TakeFootOfSplitWall(checks, &geometry, result);
       result->lower_line_taken = lower_taken;
     }
     // A lower line taken has made the two ceiling sides agree: nothing for the inner-line check.

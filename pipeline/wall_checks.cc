@@ -6,12 +6,22 @@
 
 #include <Eigen/Geometry>
 
+#include "perception/lower_edge.h"
 #include "pipeline/ceiling_agreement.h"
+#include "pipeline/ceiling_split.h"
 #include "pipeline/inner_line_check.h"
 #include "pipeline/plausibility.h"
 #include "pipeline/solver_evidence.h"
 
 namespace corridor {
+namespace {
+
+// The foot's largest turn from the junction, degrees (the junction selector's baseboard reach),
+// and how closely the two ceiling sides must agree with it.
+constexpr double kMaxFootTurnDeg = 6.0;
+constexpr double kFootCeilingAgreement = 0.03;
+
+}  // namespace
 
 Status SearchCeiling(const WallCheckInputs& in, CorridorGeometry* geometry,
                      CeilingEstimate* estimate) {
@@ -90,6 +100,60 @@ bool CheckBaseboards(const WallCheckInputs& in, CorridorGeometry* geometry,
   result->AddNote(std::string(best_side == 0 ? "left" : "right") +
                   " junction: the lower of two parallel lines (the upper one a baseboard's "
                   "top or a recess's floor line), with which both ceiling junctions agree");
+  return true;
+}
+
+bool TakeFootOfSplitWall(const WallCheckInputs& in, CorridorGeometry* geometry,
+                         RecoverDepthResult* result) {
+  const RecoverDepthOptions& options = in.options;
+  const CeilingEstimate& ceiling = result->ceiling;
+  if (CeilingSplit(in.search.bgr, in.search.camera, *geometry, ceiling, options.ceiling,
+                   options.ceiling_split, in.edges) < 0) {
+    return false;
+  }
+  // The wall put too far (on a baseboard's top) has the higher ceiling side.
+  const double h = geometry->camera_height;
+  const int side = ceiling.side_height[0] - h > ceiling.side_height[1] - h ? 0 : 1;
+  const bool left = side == 0;
+  JunctionPair pair = result->junctions;
+  JunctionLine& line = left ? pair.left : pair.right;
+  // The junction in search pixels, from its near end toward the vanishing point.
+  const double s = 1.0 / in.search.scale;
+  MergedLine chosen = LineThrough(line.near_end * s, line.far_end * s);
+  MergedLine foot;
+  double turn_deg = 0;
+  if (!FindLowerEdge(in.search.bgr, 0, chosen, pair.vanishing_point * s, left, kMaxFootTurnDeg,
+                     &foot, &turn_deg)) {
+    return false;
+  }
+  // Turned in raw pixels by the same angle (a uniform scale keeps angles), over the foot's extent.
+  foot.start *= in.search.scale;
+  foot.end *= in.search.scale;
+  TurnJunctionToFoot(foot, turn_deg, pair.vanishing_point, left, &line);
+  line.edge_points.clear();  // The solvers sample the turned line: its edge is faint.
+  line.edge_weights.clear();
+  const CorridorObservation observation = ObservationFromJunctions(pair, in.camera, options);
+  SolverSummary summary;
+  if (!in.solver.Solve(observation, nullptr, &summary).ok()) return false;
+  CorridorGeometry g = summary.estimate;
+  g.camera_height = in.camera.mount_height;
+  if (!CheckPlausible(g, options).ok() || !CheckLineFit(g, observation, in.camera, options).ok()) {
+    return false;
+  }
+  CeilingEstimate moved;
+  if (!DetectCeiling(in.search.bgr, in.search.camera, g, options.ceiling, &moved, in.edges).ok()) {
+    return false;
+  }
+  const double after = CeilingDisagreement(moved, g.camera_height, options.ceiling.min_support);
+  if (after < 0 || after > std::log(1 + kFootCeilingAgreement)) return false;
+  result->junctions = pair;
+  result->solver_summary = summary;
+  result->ceiling = moved;
+  g.ceiling_height = moved.height;
+  *geometry = g;
+  result->AddNote(std::string(left ? "left" : "right") +
+                  " junction: the foot of a band below the line first taken (a baseboard's top, "
+                  "its foot too faint for a line), with which both ceiling junctions agree");
   return true;
 }
 

@@ -34,6 +34,15 @@ Status SearchCeiling(const WallCheckInputs& in, CorridorGeometry* geometry,
 bool CheckBaseboards(const WallCheckInputs& in, CorridorGeometry* geometry,
                      RecoverDepthResult* result);
 
+// ceiling_checks_baseboards, when the two ceiling sides split (ceiling_split.h: each plainly seen,
+// no one height fits both) and no lower line was taken: the wall whose ceiling side is the higher
+// may stand on a baseboard's top whose foot is too faint for a line (a dark baseboard on a dark
+// floor). The band's lower edge from the colours (FindLowerEdge) below that wall's junction is
+// taken when, with it, both ceiling sides are found (each with the ceiling search's minimum
+// support) and agree within 3%. Updates *geometry and *result as CheckBaseboards; true when taken.
+bool TakeFootOfSplitWall(const WallCheckInputs& in, CorridorGeometry* geometry,
+                         RecoverDepthResult* result);
+
 // ceiling_checks_inner_lines: unless both ceiling junctions agree already, the inner-line check
 // (inner_line_check.h); a moved wall updates *geometry, the ceiling, result->moved_side and the
 // note. In a sequence (`previous` not null) the move must bring the width nearer the previous
