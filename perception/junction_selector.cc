@@ -51,9 +51,6 @@ bool LiesAbove(const MergedLine& outer, const Eigen::Vector2d& low, const Eigen:
   return PassesThrough(outer, vp) && outer.line.dot(low.homogeneous()) > 0;
 }
 
-// A baseboard's top and bottom edges (the junction) meet the vanishing point within a few
-// degrees of each other in the image.
-constexpr double kBaseboardMaxAngleDeg = 6.0;
 // A doorway set back from the wall (a recess) has its own floor line beyond the wall's, farther
 // from it: 6.6 degrees in the 1280x720 benchmark frame, where the recess's short line scored
 // higher than the wall's long one.
@@ -95,11 +92,11 @@ int LineBelow(const std::vector<JunctionCandidate>& side, int chosen, const Eige
 }
 
 // A baseboard gives two parallel junction-like lines: its top, and below it the junction. The
-// line just below the chosen one (within kBaseboardMaxAngleDeg) with at least `min_ratio` of its
+// line just below the chosen one (within kBaseboardMaxTurnDeg) with at least `min_ratio` of its
 // boundary score, the one farthest below; or -1.
 int LowerLine(const std::vector<JunctionCandidate>& side, int chosen, const Eigen::Vector2d& vp,
               bool left, double min_ratio, int floor_edge) {
-  return LineBelow(side, chosen, vp, left, min_ratio, 0.0, kBaseboardMaxAngleDeg, true,
+  return LineBelow(side, chosen, vp, left, min_ratio, 0.0, kBaseboardMaxTurnDeg, true,
                    floor_edge);
 }
 
@@ -178,7 +175,7 @@ void ApplyBaseboardRule(std::vector<JunctionCandidate>* candidates, const Eigen:
       // edge from the colours, under the same band test; a band whose edges say floor (tile
       // joints across it, a carpet's texture) is floor beside a stripe or a runner's edge.
       JunctionCandidate foot;
-      if (band.lower_edge(side[*chosen].line, vp, left, kBaseboardMaxAngleDeg, &foot) &&
+      if (band.lower_edge(side[*chosen].line, vp, left, kBaseboardMaxTurnDeg, &foot) &&
           band.contrast(side[*chosen].line, foot.line) >= band.min_contrast &&
           !(floor_band.measure &&
             IsFloorBand(floor_band.measure(foot.line, side[*chosen].line, vp), floor_band))) {
@@ -195,7 +192,7 @@ void ApplyBaseboardRule(std::vector<JunctionCandidate>* candidates, const Eigen:
   }
   *lower = LowerLine(side, *chosen, vp, left, 0.5, floor_edge);
   if (*lower < 0) {
-    *lower = LineBelow(side, *chosen, vp, left, kRecessMinBoundaryRatio, kBaseboardMaxAngleDeg,
+    *lower = LineBelow(side, *chosen, vp, left, kRecessMinBoundaryRatio, kBaseboardMaxTurnDeg,
                        kRecessMaxAngleDeg, false, floor_edge);
   }
 }

@@ -8,6 +8,10 @@
 
 namespace corridor {
 
+// A baseboard's top and bottom edges (the junction) meet the vanishing point within a few
+// degrees of each other in the image: the farthest a foot is sought from the line above it.
+constexpr double kBaseboardMaxTurnDeg = 6.0;
+
 // Where the line search found no line for it, the lower edge of a band below `chosen` (a
 // baseboard's foot, the floor/wall junction when `chosen` is the baseboard's top): the line
 // through `vanishing_point`, turned from `chosen` toward the floor by up to `max_angle_deg`, across

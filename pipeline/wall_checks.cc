@@ -16,9 +16,7 @@
 namespace corridor {
 namespace {
 
-// The foot's largest turn from the junction, degrees (the junction selector's baseboard reach),
-// and how closely the two ceiling sides must agree with it.
-constexpr double kMaxFootTurnDeg = 6.0;
+// How closely the two ceiling sides must agree with a foot taken.
 constexpr double kFootCeilingAgreement = 0.03;
 
 }  // namespace
@@ -122,7 +120,7 @@ bool TakeFootOfSplitWall(const WallCheckInputs& in, CorridorGeometry* geometry,
   MergedLine chosen = LineThrough(line.near_end * s, line.far_end * s);
   MergedLine foot;
   double turn_deg = 0;
-  if (!FindLowerEdge(in.search.bgr, 0, chosen, pair.vanishing_point * s, left, kMaxFootTurnDeg,
+  if (!FindLowerEdge(in.search.bgr, 0, chosen, pair.vanishing_point * s, left, kBaseboardMaxTurnDeg,
                      &foot, &turn_deg)) {
     return false;
   }
