@@ -44,6 +44,27 @@ cv::Vec3f Shade(const Hit& hit, const Eigen::Vector3d& direction, double distanc
   return hit.albedo * static_cast<float>(light);
 }
 
+// The colour seen along `direction` (unnormalised: the hit's t times its norm is the distance)
+// from `origin`, which met `hit`: shaded, and on a glossy floor mixed with what the mirrored ray
+// meets (the floor is the plane y = 0, facing up; the mirrored ray starts on it).
+cv::Vec3f SampleColour(const CorridorScene& scene, const Eigen::Vector3d& origin,
+                       const Eigen::Vector3d& direction, const Hit& hit) {
+  const double falloff = scene.options.falloff;
+  const double distance = hit.t * direction.norm();
+  const cv::Vec3f shaded = Shade(hit, direction.normalized(), distance, falloff);
+  const double gloss = scene.options.floor_gloss;
+  const Eigen::Vector3d point = origin + hit.t * direction;
+  if (!(gloss > 0) || hit.emissive || hit.normal.y() < 0.999 || std::abs(point.y()) > 1e-6) {
+    return shaded;
+  }
+  const Eigen::Vector3d mirrored(direction.x(), -direction.y(), direction.z());
+  const Hit seen = CastRay(scene, Eigen::Vector3d(point.x(), 1e-9, point.z()), mirrored);
+  if (!seen.found) return shaded;
+  const cv::Vec3f reflected =
+      Shade(seen, mirrored.normalized(), distance + seen.t * mirrored.norm(), falloff);
+  return shaded * static_cast<float>(1.0 - gloss) + reflected * static_cast<float>(gloss);
+}
+
 }  // namespace
 
 Status RenderFrame(const SceneOptions& options, const Camera& camera, const CameraPose& pose,
@@ -90,8 +111,7 @@ Status RenderFrame(const CorridorScene& scene, const Camera& camera, const Camer
         const Eigen::Vector3d direction = world_from_camera * ray;
         const Hit sample = CastRay(scene, origin, direction);
         if (!sample.found) continue;
-        sum += Shade(sample, direction.normalized(), sample.t * direction.norm(),
-                     scene.options.falloff);
+        sum += SampleColour(scene, origin, direction, sample);
       }
       color.at<cv::Vec3f>(v, u) = sum * 0.25f;
     }

@@ -52,6 +52,7 @@ void SetParts(const std::string& name, Draw* d, SceneOptions* s) {
   s->glass_walls = on("glass");
   s->window_bands = on("windows");
   s->pillars = on("pillars");
+  if (name == "glossy") s->floor_gloss = d->Uniform(0.25, 0.6);
 }
 
 Rig PickRig(const std::string& name, Draw* d) {
@@ -113,7 +114,7 @@ ScenePreset MakeScene(const std::string& name, uint32_t seed, const RealBuilding
 const std::vector<std::string>& RealBuildingClasses() {
   static const std::vector<std::string> kClasses = {"rail", "wainscot", "furniture", "floor",
                                                     "carpet", "glass", "windows", "pillars",
-                                                    "head", "low", "mix"};
+                                                    "head", "low", "mix", "glossy"};
   return kClasses;
 }
 

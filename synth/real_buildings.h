@@ -43,6 +43,8 @@ namespace synth {
 //              +-3 deg (the truth depth is ray-cast with the roll; truth.yaml has no roll).
 //   low        low robot: height 0.2-0.5 m, pitch 0-0.08 rad down.
 //   mix        every part with chance 0.4 (furniture 0-0.8), camera robot 40%, head 40%, low 20%.
+//   glossy     a polished floor: 0.25-0.6 of its colour is the mirrored view (the baseboard and
+//              the walls reflected below the junction). Not part of mix, which keeps its scenes.
 const std::vector<std::string>& RealBuildingClasses();
 
 // The class's base seed (named in docs/results.md): 2900 + 100 x its index in the list above.

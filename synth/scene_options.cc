@@ -30,7 +30,8 @@ bool SceneOptions::Check(std::string* why) const {
          InRange("tile_size", tile_size, 0.1, 2, why) && InRange("falloff", falloff, 0, 1, why) &&
          InRange("blur_sigma", blur_sigma, 0, 5, why) &&
          InRange("noise_sigma", noise_sigma, 0, 50, why) &&
-         InRange("furniture", furniture, 0, 1, why);
+         InRange("furniture", furniture, 0, 1, why) &&
+         InRange("floor_gloss", floor_gloss, 0, 0.8, why);
 }
 
 }  // namespace synth

@@ -35,6 +35,8 @@ struct SceneOptions {
   bool glass_walls = false;    // Glass runs in the walls; a lit room shows behind (plane).
   bool window_bands = false;   // A row of windows above a sill along one wall.
   bool pillars = false;        // Pillars standing out of the walls, floor to ceiling (solids).
+  double floor_gloss = 0.0;    // A polished floor: this share of its colour is the mirrored ray's
+                               // (the baseboard's, the walls', reflected), [0, 0.8].
 
   bool Check(std::string* why) const;
 };

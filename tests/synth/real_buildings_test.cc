@@ -258,6 +258,67 @@ TEST(RealBuildingsTest, PaintKeepsTheDepthAndSillsAreNearer) {
   EXPECT_LT(nearer, camera.image_width * camera.image_height / 20);
 }
 
+// A glossy floor, by hand for a level camera looking straight down the corridor: a wall column
+// has one depth Z, and the floor at row v mirrors the wall point that the matte image shows at
+// row 2 (cy + f h / Z) - v of the same column (its height mirrored about the floor). Without
+// falloff the glossy floor is (1 - g) floor + g that wall pixel; nothing else changes.
+TEST(RealBuildingsTest, AGlossyFloorMirrorsTheWallAndKeepsTheDepth) {
+  const Camera camera = TestCamera();
+  // 0.75 m from the right wall: its junction reaches the image's bottom inside the image.
+  const CameraPose pose{0.0, 0.0, 0.45, 0.66, 3.0};
+  SceneOptions matte_options = Plain(5);
+  matte_options.falloff = 0;
+  matte_options.baseboard_contrast = 0.8;
+  SceneOptions glossy_options = matte_options;
+  glossy_options.floor_gloss = 0.5;
+  Frame matte, glossy;
+  ASSERT_TRUE(RenderFrame(matte_options, camera, pose, &matte).ok());
+  ASSERT_TRUE(RenderFrame(glossy_options, camera, pose, &glossy).ok());
+  EXPECT_EQ(cv::norm(matte.depth, glossy.depth, cv::NORM_INF), 0.0);
+  const double f = camera.fy, h = pose.height;
+  // The floor's pixels, by the depth of the floor plane at their row.
+  cv::Mat floor_mask(camera.image_height, camera.image_width, CV_8U, cv::Scalar(0));
+  for (int v = 0; v < camera.image_height; ++v) {
+    for (int u = 0; u < camera.image_width; ++u) {
+      const double depth = matte.depth.at<float>(v, u), y = (v - camera.cy) / f;
+      floor_mask.at<uchar>(v, u) = y > 0 && std::abs(depth - h / y) < 1e-4 * depth ? 255 : 0;
+    }
+  }
+  cv::Mat near_floor;  // A pixel's samples may hit the floor up to a pixel away.
+  cv::dilate(floor_mask, near_floor, cv::Mat::ones(3, 3, CV_8U));
+  int off_floor = 0, off_floor_same = 0, mirrored = 0, mirrored_close = 0;
+  for (int v = 1; v < camera.image_height - 1; ++v) {
+    for (int u = 1; u < camera.image_width - 1; ++u) {
+      const cv::Vec3b m = matte.bgr.at<cv::Vec3b>(v, u), g = glossy.bgr.at<cv::Vec3b>(v, u);
+      if (!near_floor.at<uchar>(v, u)) {
+        ++off_floor;
+        off_floor_same += m == g;
+        continue;
+      }
+      if (!floor_mask.at<uchar>(v, u)) continue;
+      // The wall column's depth: the depth at the row of the camera's height (the horizon).
+      const double wall = matte.depth.at<float>(static_cast<int>(std::lround(camera.cy)), u);
+      const int vm = static_cast<int>(std::lround(2 * (camera.cy + f * h / wall) - v));
+      if (vm < 1 || vm >= camera.image_height - 1 || vm >= v - 2) continue;
+      // Only where the mirrored row is on that wall, a pixel away from the floor (the samples of
+      // a pixel near an edge see both sides).
+      bool on_wall = std::abs(matte.depth.at<float>(vm, u) - wall) < 0.02 * wall;
+      for (int dv = -1; dv <= 1; ++dv) {
+        for (int du = -1; du <= 1; ++du) on_wall &= !floor_mask.at<uchar>(vm + dv, u + du);
+      }
+      if (!on_wall) continue;
+      const cv::Vec3b w = matte.bgr.at<cv::Vec3b>(vm, u);
+      ++mirrored;
+      bool close = true;
+      for (int c = 0; c < 3; ++c) close &= std::abs(g[c] - 0.5 * (m[c] + w[c])) <= 3.0;
+      mirrored_close += close;
+    }
+  }
+  EXPECT_EQ(off_floor_same, off_floor);  // Walls and ceiling are untouched.
+  EXPECT_GT(mirrored, 200);
+  EXPECT_GE(mirrored_close, 0.9 * mirrored) << mirrored_close << " of " << mirrored;
+}
+
 // geometry.md by hand: n = (0, cos t, sin t), m = (cos p, sin t sin p, -cos t sin p) for the
 // unrolled ray; a rolled camera's pixel ray is first turned back by the roll by hand.
 TEST(RealBuildingsTest, RolledCameraTruthIsTheHandRotatedRays) {
@@ -342,6 +403,12 @@ TEST(RealBuildingsTest, PresetClassesHaveTheirPartsAndCameras) {
     }
     if (cls != "mix" && cls != "rail") {
       EXPECT_FALSE(s.handrails) << preset.name;
+    }
+    if (cls == "glossy") {
+      EXPECT_GE(s.floor_gloss, 0.25) << preset.name;
+      EXPECT_LE(s.floor_gloss, 0.6) << preset.name;
+    } else {
+      EXPECT_EQ(s.floor_gloss, 0.0) << preset.name;
     }
     for (const CameraPose& pose : preset.poses) {
       EXPECT_EQ(pose.height, preset.camera.mount_height);
