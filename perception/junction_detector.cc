@@ -19,6 +19,7 @@
 #include "perception/junction_support.h"
 #include "perception/line_segments.h"
 #include "perception/lower_edge.h"
+#include "perception/reflected_band.h"
 #include "perception/single_junction.h"
 
 namespace corridor {
@@ -367,6 +368,27 @@ void RefineChosenPair(const PairSearch& chosen, const std::vector<Eigen::Vector2
       std::abs(vp.z()) > 1e-12 ? Eigen::Vector2d(vp.head<2>() / vp.z()) : pair.vanishing_point;
 }
 
+// Stage: on a polished floor, a junction taken at its baseboard's reflection's lower edge moves up
+// to the middle of the band (reflected_band.h), and the vanishing point with it.
+void TakeJunctionsAboveReflections(const cv::Mat& color, JunctionPair* result) {
+  const Eigen::Vector2d vp = result->vanishing_point;
+  // One floor mirrors both walls' baseboards: both bands must read as reflections.
+  double turn[2] = {0, 0};
+  for (const bool left : {true, false}) {
+    if (!FindReflectedJunction(color, left ? result->left : result->right, vp, left,
+                               2 * kBaseboardMaxTurnDeg, &turn[left ? 0 : 1])) {
+      return;
+    }
+  }
+  for (const bool left : {true, false}) {
+    JunctionLine& line = left ? result->left : result->right;
+    TurnJunctionToFoot(LineThrough(line.near_end, line.far_end), turn[left ? 0 : 1], vp, left,
+                       &line);
+  }
+  const Eigen::Vector3d x = result->left.line.cross(result->right.line);
+  if (std::abs(x.z()) > 1e-12) result->vanishing_point = x.head<2>() / x.z();
+}
+
 // Stage: the floor between the junctions (result->floor_texture, when enough of it is seen);
 // true, with the reason in *why, when it has too many strong edges along no corridor line for a
 // corridor floor (an outdoor scene, a still life).
@@ -439,6 +461,7 @@ Status DetectJunctionsIn(const cv::Mat& bgr, const cv::Mat* halved,
   EdgePixelsInImage(region, found.edges, &edge_pixels);
   RefineChosenPair(chosen, edge_pixels, options.support_distance_px,
                    height, refit, result);
+  TakeJunctionsAboveReflections(color, result);
   if (options.max_floor_texture > 0 && FloorIsTextured(found, region, options, result, &why)) {
     return NoCorridor(result, why);
   }

@@ -1,0 +1,28 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <opencv2/core.hpp>
+
+#include "corridor_depth/junction_lines.h"
+
+namespace corridor {
+
+// On a polished floor a baseboard's reflection lies just below the junction, and the band of
+// baseboard and reflection reads as one: its lower edge, the reflection's, is taken for the
+// junction, which puts the wall too near by h / (h + b) for a baseboard b high and a camera h
+// high. Seen from the vanishing point, lines on the wall at height z have slopes (below the
+// horizontal) in proportion to h - z: the baseboard's top (b), the junction (0) and the
+// reflection's lower edge (-b) have slopes in proportion to h - b, h and h + b, so the junction is
+// the band's middle in slope. The band is a reflection when its lower half's colour is a blend of
+// its upper half's and the floor's below it (the mirrored baseboard, dimmed toward the floor);
+// a baseboard above a true junction has one colour over the whole band, and is left alone.
+//
+// From `junction` (raw pixels of the 8-bit BGR `image`, through `vanishing_point`), the band's top
+// is the largest colour change toward the wall within `max_turn_deg`. True, with *turn_deg the
+// junction's turn toward the floor (negative: toward the wall, for TurnJunctionToFoot), when the
+// band is a reflection. `left`: the left wall's junction (the floor lies to its right).
+bool FindReflectedJunction(const cv::Mat& image, const JunctionLine& junction,
+                           const Eigen::Vector2d& vanishing_point, bool left, double max_turn_deg,
+                           double* turn_deg);
+
+}  // namespace corridor

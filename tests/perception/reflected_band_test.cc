@@ -1,0 +1,111 @@
+// FindReflectedJunction on drawn bands below a line through a vanishing point, coloured by their
+// angle below the horizontal: a baseboard and its reflection on a polished floor (the junction at
+// the band's middle in slope, computed by hand), a baseboard above a true junction on a matte
+// floor, a band whose lower part is no blend of the baseboard and the floor, and bad input.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "perception/reflected_band.h"
+
+namespace corridor {
+namespace {
+
+constexpr double kDeg = M_PI / 180.0;
+const Eigen::Vector2d kVp(320, 180);
+
+// The direction from the vanishing point of a left (right) line `angle_deg` below the horizontal.
+Eigen::Vector2d Down(double angle_deg, bool left) {
+  return Eigen::Vector2d((left ? -1 : 1) * std::cos(angle_deg * kDeg), std::sin(angle_deg * kDeg));
+}
+
+JunctionLine LineAt(double angle_deg, bool left) {
+  JunctionLine line;
+  line.far_end = kVp + 20 * Down(angle_deg, left);
+  line.near_end = kVp + 330 * Down(angle_deg, left);
+  const Eigen::Vector3d l = line.far_end.homogeneous().cross(line.near_end.homogeneous());
+  line.line = l / l.head<2>().norm();
+  return line;
+}
+
+// An image whose pixels below the vanishing point, on the `left` (or right) half, take the colour
+// of their angle below the horizontal: colour(angle).
+template <typename Colour>
+cv::Mat DrawByAngle(bool left, Colour colour) {
+  cv::Mat image(480, 640, CV_8UC3, cv::Scalar(200, 200, 200));
+  for (int v = 0; v < image.rows; ++v) {
+    for (int u = 0; u < image.cols; ++u) {
+      const double dx = (u - kVp.x()) * (left ? -1 : 1), dy = v - kVp.y();
+      if (dy <= 0 || dx <= 0) continue;
+      image.at<cv::Vec3b>(v, u) = colour(std::atan2(dy, dx) / kDeg);
+    }
+  }
+  return image;
+}
+
+cv::Vec3b Blend(const cv::Vec3d& a, const cv::Vec3d& b, double g) {
+  const cv::Vec3d c = (1 - g) * a + g * b;
+  return cv::Vec3b(cv::saturate_cast<uchar>(c[0]), cv::saturate_cast<uchar>(c[1]),
+                   cv::saturate_cast<uchar>(c[2]));
+}
+
+// Wall above 30 degrees, the baseboard down to the junction, its reflection down to 38 degrees;
+// the junction's slope is the mean of 30's and 38's (the mirror about the floor), about 34.1.
+const double kTop = 30, kBottom = 38;
+const double kJunction = std::atan(0.5 * (std::tan(kTop * kDeg) + std::tan(kBottom * kDeg))) / kDeg;
+const cv::Vec3d kWall(200, 205, 215), kBoard(60, 60, 70), kMatte(110, 120, 150);
+
+TEST(ReflectedBandTest, APolishedFloorsReflectionPutsTheJunctionAtTheBandsMiddle) {
+  for (const bool left : {true, false}) {
+    const double gloss = 0.4;
+    const cv::Mat image = DrawByAngle(left, [&](double angle) {
+      if (angle < kTop) return Blend(kWall, kWall, 0);
+      if (angle < kJunction) return Blend(kBoard, kBoard, 0);
+      // The floor mirrors the baseboard, then the wall, blended with its own colour.
+      if (angle < kBottom) return Blend(kMatte, kBoard, gloss);
+      return Blend(kMatte, kWall, gloss);
+    });
+    double turn = 0;
+    ASSERT_TRUE(
+        FindReflectedJunction(image, LineAt(kBottom, left), kVp, left, 12.0, &turn))
+        << left;
+    EXPECT_NEAR(turn, kJunction - kBottom, 0.15) << left;
+  }
+}
+
+TEST(ReflectedBandTest, ABaseboardAboveATrueJunctionIsLeftAlone) {
+  // The same band on a matte floor is a baseboard from 30 to 38 degrees, all one colour.
+  const cv::Mat image = DrawByAngle(true, [&](double angle) {
+    if (angle < kTop) return Blend(kWall, kWall, 0);
+    if (angle < kBottom) return Blend(kBoard, kBoard, 0);
+    return Blend(kMatte, kMatte, 0);
+  });
+  double turn = 0;
+  EXPECT_FALSE(FindReflectedJunction(image, LineAt(kBottom, true), kVp, true, 12.0, &turn));
+}
+
+TEST(ReflectedBandTest, ALowerPartThatIsNoBlendIsNoReflection) {
+  // A band split at the middle, its lower part green: no blend of the baseboard and the floor.
+  const cv::Mat image = DrawByAngle(false, [&](double angle) {
+    if (angle < kTop) return Blend(kWall, kWall, 0);
+    if (angle < kJunction) return Blend(kBoard, kBoard, 0);
+    if (angle < kBottom) return cv::Vec3b(40, 160, 40);
+    return Blend(kMatte, kWall, 0.4);
+  });
+  double turn = 0;
+  EXPECT_FALSE(FindReflectedJunction(image, LineAt(kBottom, false), kVp, false, 12.0, &turn));
+}
+
+TEST(ReflectedBandTest, RefusesWhatItCannotLookAt) {
+  const cv::Mat image(480, 640, CV_8UC3, cv::Scalar(0, 0, 0));
+  const JunctionLine line = LineAt(kBottom, true);
+  double turn = 0;
+  EXPECT_FALSE(FindReflectedJunction(cv::Mat(), line, kVp, true, 12.0, &turn));
+  EXPECT_FALSE(FindReflectedJunction(cv::Mat(480, 640, CV_8UC1), line, kVp, true, 12.0, &turn));
+  EXPECT_FALSE(FindReflectedJunction(image, line, Eigen::Vector2d(NAN, 0), true, 12.0, &turn));
+  EXPECT_FALSE(FindReflectedJunction(image, line, kVp, true, 0.0, &turn));
+  EXPECT_FALSE(FindReflectedJunction(image, line, kVp, true, 12.0, &turn));  // No band at all.
+}
+
+}  // namespace
+}  // namespace corridor
