@@ -8,38 +8,22 @@
 #include <opencv2/imgproc.hpp>
 
 #include "perception/lower_edge.h"
+#include "tests/support/angle_bands.h"
 
 namespace corridor {
 namespace {
 
-constexpr double kDeg = M_PI / 180.0;
-const Eigen::Vector2d kVp(320, 180);
+constexpr double kDeg = testing_util::kBandDeg;
+const Eigen::Vector2d& kVp = testing_util::kBandVp;
+using testing_util::DrawByAngle;
 
 // The direction from the vanishing point of a left (right) junction `angle_deg` below the
 // horizontal.
-Eigen::Vector2d Down(double angle_deg, bool left) {
-  return Eigen::Vector2d((left ? -1 : 1) * std::cos(angle_deg * kDeg), std::sin(angle_deg * kDeg));
-}
+Eigen::Vector2d Down(double angle_deg, bool left) { return testing_util::BandDown(angle_deg, left); }
 
 // A MergedLine from the vanishing point along `direction`, from `r0` to `r1` px.
 MergedLine LineAlong(const Eigen::Vector2d& direction, double r0, double r1) {
   return LineThrough(kVp + r0 * direction, kVp + r1 * direction);
-}
-
-// An image whose pixels below the vanishing point are coloured by their angle below the
-// horizontal, seen from the vanishing point on the `left` (or right) half: `colour(angle, rng)`.
-template <typename Colour>
-cv::Mat DrawByAngle(bool left, Colour colour) {
-  cv::Mat image(480, 640, CV_8UC3, cv::Scalar(200, 200, 200));
-  std::mt19937 rng(7);
-  for (int v = 0; v < image.rows; ++v) {
-    for (int u = 0; u < image.cols; ++u) {
-      const double dx = (u - kVp.x()) * (left ? -1 : 1), dy = v - kVp.y();
-      if (dy <= 0 || dx <= 0) continue;
-      image.at<cv::Vec3b>(v, u) = colour(std::atan2(dy, dx) / kDeg, rng);
-    }
-  }
-  return image;
 }
 
 // A carpet: each pixel its own shade of red-brown, as textured as a real one.

@@ -7,40 +7,29 @@
 #include <gtest/gtest.h>
 
 #include "perception/reflected_band.h"
+#include "tests/support/angle_bands.h"
 
 namespace corridor {
 namespace {
 
-constexpr double kDeg = M_PI / 180.0;
-const Eigen::Vector2d kVp(320, 180);
-
-// The direction from the vanishing point of a left (right) line `angle_deg` below the horizontal.
-Eigen::Vector2d Down(double angle_deg, bool left) {
-  return Eigen::Vector2d((left ? -1 : 1) * std::cos(angle_deg * kDeg), std::sin(angle_deg * kDeg));
-}
+constexpr double kDeg = testing_util::kBandDeg;
+const Eigen::Vector2d& kVp = testing_util::kBandVp;
+using testing_util::BandDown;
 
 JunctionLine LineAt(double angle_deg, bool left) {
   JunctionLine line;
-  line.far_end = kVp + 20 * Down(angle_deg, left);
-  line.near_end = kVp + 330 * Down(angle_deg, left);
+  line.far_end = kVp + 20 * BandDown(angle_deg, left);
+  line.near_end = kVp + 330 * BandDown(angle_deg, left);
   const Eigen::Vector3d l = line.far_end.homogeneous().cross(line.near_end.homogeneous());
   line.line = l / l.head<2>().norm();
   return line;
 }
 
-// An image whose pixels below the vanishing point, on the `left` (or right) half, take the colour
-// of their angle below the horizontal: colour(angle).
+// An image coloured by angle below the vanishing point (tests/support/angle_bands.h), from a
+// colour of the angle alone.
 template <typename Colour>
 cv::Mat DrawByAngle(bool left, Colour colour) {
-  cv::Mat image(480, 640, CV_8UC3, cv::Scalar(200, 200, 200));
-  for (int v = 0; v < image.rows; ++v) {
-    for (int u = 0; u < image.cols; ++u) {
-      const double dx = (u - kVp.x()) * (left ? -1 : 1), dy = v - kVp.y();
-      if (dy <= 0 || dx <= 0) continue;
-      image.at<cv::Vec3b>(v, u) = colour(std::atan2(dy, dx) / kDeg);
-    }
-  }
-  return image;
+  return testing_util::DrawByAngle(left, [&](double angle, std::mt19937&) { return colour(angle); });
 }
 
 cv::Vec3b Blend(const cv::Vec3d& a, const cv::Vec3d& b, double g) {
