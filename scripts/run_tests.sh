@@ -2,8 +2,8 @@
 # Installs what is missing, checks the formatting, builds the whole test suite with
 # AddressSanitizer + UndefinedBehaviorSanitizer (build-asan/, -O1) and runs it with ctest: any
 # sanitizer report fails the test that caused it. Then builds the Python module and the ROS node
-# in Release (build/; an AddressSanitizer module does not import into a plain Python) and runs
-# their tests. This is what CI's .ci/run calls.
+# without sanitizers (build-release-tests/, -O1; an AddressSanitizer module does not import into a
+# plain Python) and runs their tests. This is what CI's .ci/run calls.
 # CORRIDOR_SANITIZE=0 runs the whole suite on the plain Release build (build/) instead, in less
 # than half the time (docs/results.md, "Test suite").
 # Usage: bash scripts/run_tests.sh [extra ctest arguments]
