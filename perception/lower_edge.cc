@@ -4,7 +4,7 @@
 #include <cmath>
 #include <vector>
 
-#include "core/round_half_away.h"
+#include "perception/band_profile.h"
 
 namespace corridor {
 namespace {
@@ -23,18 +23,6 @@ constexpr int kReappearsOver = 5;
 // The largest fraction of points whose band middle looks like the floor beyond the band: a
 // baseboard is the band at most points.
 constexpr double kMaxFloorLikeBand = 0.5;
-
-bool Inside(const cv::Mat& roi, int roi_top, const Eigen::Vector2d& p) {
-  return p.x() >= 0 && p.x() <= roi.cols - 1 && p.y() >= roi_top && p.y() <= roi_top + roi.rows - 1;
-}
-
-// `down` (a unit direction from the vanishing point along a junction) turned toward the floor by
-// `angle` radians: toward straight down, i.e. to the right of a left junction.
-Eigen::Vector2d Turned(const Eigen::Vector2d& down, bool left, double angle) {
-  const Eigen::Vector2d inward =
-      left ? Eigen::Vector2d(down.y(), -down.x()) : Eigen::Vector2d(-down.y(), down.x());
-  return std::cos(angle) * down + std::sin(angle) * inward;
-}
 
 }  // namespace
 
@@ -61,13 +49,13 @@ bool FindLowerEdge(const cv::Mat& roi, int roi_top, const MergedLine& chosen,
   if (first < 2 || first + 2 > last - 2) return false;
   // The sample distances from the vanishing point whose points stay inside the image from the
   // chosen line to the farthest candidate.
-  const Eigen::Vector2d far_turn = Turned(down, left, last * kAngleStepDeg * deg);
+  const Eigen::Vector2d far_turn = TurnedDown(down, left, last * kAngleStepDeg * deg);
   const double r_start = std::max(r_far, r_near - kNearPart * (r_near - r_far));
   thread_local std::vector<double> radii;
   radii.clear();
   for (int i = 0; i < kSamples; ++i) {
     const double r = r_start + (r_near - r_start) * (i + 0.5) / kSamples;
-    if (Inside(roi, roi_top, vp + r * down) && Inside(roi, roi_top, vp + r * far_turn)) {
+    if (InsideRoi(roi, roi_top, vp + r * down) && InsideRoi(roi, roi_top, vp + r * far_turn)) {
       radii.push_back(r);
     }
   }
@@ -77,23 +65,16 @@ bool FindLowerEdge(const cv::Mat& roi, int roi_top, const MergedLine& chosen,
   const int view_last = std::min(2 * last, static_cast<int>(45.0 / kAngleStepDeg));
   thread_local std::vector<cv::Vec3d> profile;
   profile.assign(static_cast<size_t>(view_last) + 1, cv::Vec3d(0, 0, 0));
-  // The colour at distance r from the vanishing point on candidate k.
+  // The colour at distance r from the vanishing point along d.
   const auto colour_at = [&](const Eigen::Vector2d& d, double r) {
-    const Eigen::Vector2d p = vp + r * d;
-    const int u = std::clamp(RoundHalfAway(p.x()), 0, roi.cols - 1);
-    const int v = std::clamp(RoundHalfAway(p.y()) - roi_top, 0, roi.rows - 1);
-    const cv::Vec3b& c = roi.at<cv::Vec3b>(v, u);
-    return cv::Vec3d(c[0], c[1], c[2]);
+    return ColourAt(roi, roi_top, vp + r * d);
   };
   const auto direction = [&](double k) {
     const double a = k * kAngleStepDeg * deg;
-    return Turned(down, left, a);
+    return TurnedDown(down, left, a);
   };
   for (int k = 0; k <= view_last; ++k) {
-    const Eigen::Vector2d d = direction(k);
-    cv::Vec3d sum(0, 0, 0);
-    for (const double r : radii) sum += colour_at(d, r);
-    profile[static_cast<size_t>(k)] = sum / static_cast<double>(radii.size());
+    profile[static_cast<size_t>(k)] = MeanColourAlong(roi, roi_top, vp, direction(k), radii);
   }
   // The step at each candidate: the two candidates beyond against the two before.
   const auto step_at = [&](int k) {
@@ -142,7 +123,7 @@ bool FindLowerEdge(const cv::Mat& roi, int roi_top, const MergedLine& chosen,
     if (curvature < 0) peak += std::clamp(0.5 * (s0 - s2) / curvature, -0.5, 0.5);
   }
   const double a = peak * kAngleStepDeg * deg;
-  const Eigen::Vector2d d = Turned(down, left, a);
+  const Eigen::Vector2d d = TurnedDown(down, left, a);
   *lower = LineThrough(vp + r_far * d, vp + r_near * d);
   *turn_deg = peak * kAngleStepDeg;
   return true;
@@ -155,7 +136,7 @@ Eigen::Vector3d TurnTowardFloor(const Eigen::Vector3d& line, const Eigen::Vector
   Eigen::Vector2d down(line.y(), -line.x());
   if (down.dot(near_point - vanishing_point) < 0) down = -down;
   return LineThrough(vanishing_point,
-                     vanishing_point + Turned(down, left, turn_deg * M_PI / 180.0))
+                     vanishing_point + TurnedDown(down, left, turn_deg * M_PI / 180.0))
       .line;
 }
 

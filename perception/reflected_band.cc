@@ -4,7 +4,7 @@
 #include <cmath>
 #include <vector>
 
-#include "core/round_half_away.h"
+#include "perception/band_profile.h"
 
 namespace corridor {
 namespace {
@@ -39,16 +39,9 @@ bool FindReflectedJunction(const cv::Mat& image, const JunctionLine& junction,
   down /= r_near;
   const double r_far = std::max(0.0, (junction.far_end - vp).dot(down));
   if (!(r_near > r_far + 8)) return false;
-  const Eigen::Vector2d inward =
-      left ? Eigen::Vector2d(down.y(), -down.x()) : Eigen::Vector2d(-down.y(), down.x());
   const double step = kStepDeg * M_PI / 180.0;
   const int wall_steps = static_cast<int>(max_turn_deg / kStepDeg);
-  const auto direction = [&](int k) {
-    return Eigen::Vector2d(std::cos(k * step) * down + std::sin(k * step) * inward);
-  };
-  const auto inside = [&](const Eigen::Vector2d& p) {
-    return p.x() >= 0 && p.y() >= 0 && p.x() <= image.cols - 1 && p.y() <= image.rows - 1;
-  };
+  const auto direction = [&](int k) { return TurnedDown(down, left, k * step); };
   // Radii whose points stay inside the image from the farthest candidate on the wall to the
   // farthest on the floor.
   const Eigen::Vector2d wall_end = direction(-wall_steps), floor_end = direction(kFloorSteps);
@@ -57,7 +50,9 @@ bool FindReflectedJunction(const cv::Mat& image, const JunctionLine& junction,
   radii.clear();
   for (int i = 0; i < kSamples; ++i) {
     const double r = r_start + (r_near - r_start) * (i + 0.5) / kSamples;
-    if (inside(vp + r * wall_end) && inside(vp + r * floor_end)) radii.push_back(r);
+    if (InsideRoi(image, 0, vp + r * wall_end) && InsideRoi(image, 0, vp + r * floor_end)) {
+      radii.push_back(r);
+    }
   }
   if (radii.size() < 8) return false;
   // The mean colour along each candidate, from the farthest on the wall (index 0) to the
@@ -65,16 +60,8 @@ bool FindReflectedJunction(const cv::Mat& image, const JunctionLine& junction,
   thread_local std::vector<cv::Vec3d> profile;
   profile.assign(static_cast<size_t>(wall_steps + kFloorSteps + 1), cv::Vec3d(0, 0, 0));
   for (int k = -wall_steps; k <= kFloorSteps; ++k) {
-    const Eigen::Vector2d d = direction(k);
-    cv::Vec3d sum(0, 0, 0);
-    for (const double r : radii) {
-      const Eigen::Vector2d p = vp + r * d;
-      const int u = std::clamp(RoundHalfAway(p.x()), 0, image.cols - 1);
-      const int v = std::clamp(RoundHalfAway(p.y()), 0, image.rows - 1);
-      const cv::Vec3b& c = image.at<cv::Vec3b>(v, u);
-      sum += cv::Vec3d(c[0], c[1], c[2]);
-    }
-    profile[static_cast<size_t>(k + wall_steps)] = sum / static_cast<double>(radii.size());
+    profile[static_cast<size_t>(k + wall_steps)] =
+        MeanColourAlong(image, 0, vp, direction(k), radii);
   }
   const auto at = [&](int k) { return profile[static_cast<size_t>(k + wall_steps)]; };
   const auto mean = [&](int from, int to) {
