@@ -36,12 +36,14 @@ set(CORRIDOR_TEST_DEFINITIONS
 # What the tests' shared precompiled header includes from, linked into every test binary.
 set(CORRIDOR_TEST_PCH_DEPS GTest::gtest opencv_core opencv_imgproc Eigen3::Eigen)
 
-# corridor_add_test(NAME SOURCES ... DEPS ...): a GoogleTest binary registered with ctest, one ctest
-# test per GoogleTest test; or, with CORRIDOR_TEST_PER_BINARY, one per binary, which starts each
-# binary once instead of once per test (a sanitized binary takes a third of a second to start).
+# corridor_add_test(NAME SOURCES ... DEPS ... [LABELS ...] [ENVIRONMENT ...] [COST N]): a GoogleTest
+# binary registered with ctest, one ctest test per GoogleTest test; or, with
+# CORRIDOR_TEST_PER_BINARY, one per binary, which starts each binary once instead of once per test
+# (a sanitized binary takes a third of a second to start). COST starts a long binary first in a
+# parallel run that has no timings of its own yet (a fresh build).
 option(CORRIDOR_TEST_PER_BINARY "Register each test binary as one ctest test" OFF)
 function(corridor_add_test name)
-  cmake_parse_arguments(ARG "" "" "SOURCES;DEPS;LABELS" ${ARGN})
+  cmake_parse_arguments(ARG "" "COST" "SOURCES;DEPS;LABELS;ENVIRONMENT" ${ARGN})
   add_executable(${name} ${ARG_SOURCES})
   target_compile_options(${name} PRIVATE ${CORRIDOR_WARNINGS})
   target_link_libraries(${name} PRIVATE ${ARG_DEPS} ${CORRIDOR_TEST_PCH_DEPS} GTest::gtest_main)
@@ -52,9 +54,19 @@ function(corridor_add_test name)
   if(CORRIDOR_TEST_PER_BINARY)
     add_test(NAME ${name} COMMAND ${name})
     set_tests_properties(${name} PROPERTIES LABELS "${ARG_LABELS}")
+    if(ARG_ENVIRONMENT)
+      set_tests_properties(${name} PROPERTIES ENVIRONMENT "${ARG_ENVIRONMENT}")
+    endif()
+    if(ARG_COST)
+      set_tests_properties(${name} PROPERTIES COST ${ARG_COST})
+    endif()
   else()
     include(GoogleTest)
+    set(properties LABELS "${ARG_LABELS}")
+    if(ARG_ENVIRONMENT)
+      list(APPEND properties ENVIRONMENT "${ARG_ENVIRONMENT}")
+    endif()
     gtest_discover_tests(${name} TEST_PREFIX "${name}." DISCOVERY_TIMEOUT 60
-                         PROPERTIES LABELS "${ARG_LABELS}")
+                         PROPERTIES ${properties})
   endif()
 endfunction()

@@ -3,7 +3,9 @@
 # installed headers are exactly include/corridor_depth/ and include only each other;
 # examples/cpp_consumer configures with find_package(corridor_depth), links corridor_depth::core,
 # builds, loads no ROS library, needs no gflags itself, and recovers a real photo's depth; the
-# Python module, when built, imports from the prefix and recovers the same photo.
+# Python module, when built, imports from the prefix and recovers the same photo. A sanitized build
+# (run_tests.sh checks build-asan/) links the consumer with the sanitizers and preloads their
+# runtime into Python.
 # Usage: bash scripts/check_install.sh [BUILD_DIR (default build)]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -32,8 +34,16 @@ if problems:
     sys.exit("check_install:\n  " + "\n  ".join(problems))
 print(f"check_install: {len(installed)} public headers, each including only public headers")
 PY
+consumer_flags=()
+python_env=()
+if grep -q "^CORRIDOR_SANITIZE:BOOL=ON" "$BUILD_DIR/CMakeCache.txt"; then
+  consumer_flags=(-DCMAKE_EXE_LINKER_FLAGS=-fsanitize=address,undefined,float-cast-overflow)
+  cxx=$(sed -n 's/^CMAKE_CXX_COMPILER:[A-Z]*=//p' "$BUILD_DIR/CMakeCache.txt")
+  preload="$("$cxx" -print-file-name=libasan.so) $("$cxx" -print-file-name=libstdc++.so)"
+  python_env=(LD_PRELOAD="$preload" ASAN_OPTIONS=detect_leaks=0)
+fi
 cmake -S examples/cpp_consumer -B "$work/consumer" -DCMAKE_PREFIX_PATH="$work/prefix" \
-  -DCMAKE_BUILD_TYPE=Release >/dev/null
+  -DCMAKE_BUILD_TYPE=Release "${consumer_flags[@]}" >/dev/null
 cmake --build "$work/consumer" -j"$(nproc)" >/dev/null
 if ldd "$work/consumer/corridor_consumer" | grep -E "libros|librosbag|libroscpp"; then
   echo "check_install: the consumer loads ROS libraries" >&2
@@ -56,7 +66,7 @@ site=$(find "$work/prefix" -name "corridor_depth*.so" -printf "%h\n" | head -1)
 # The Python the module was built for (numpy may be missing from another one on PATH).
 python=$(sed -n 's/^Python3_EXECUTABLE:FILEPATH=//p' "$BUILD_DIR/CMakeCache.txt")
 if [ -n "$site" ]; then
-  PYTHONPATH="$site" "${python:-python3}" - "$site" tests/data/real-corridors/rtabmap_3.jpg <<'PY'
+  env "${python_env[@]}" PYTHONPATH="$site" "${python:-python3}" - "$site" tests/data/real-corridors/rtabmap_3.jpg <<'PY'
 import sys
 import numpy as np
 import corridor_depth as cd

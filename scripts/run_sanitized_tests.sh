@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Builds the whole test suite with AddressSanitizer + UndefinedBehaviorSanitizer
-# (CORRIDOR_SANITIZE, into build-asan/) and runs it with ctest. The ROS node is left out here (ROS
-# 1's own libraries keep memory to the end, which LeakSanitizer reports); run_release_tests.sh
-# builds and tests it. Any sanitizer report aborts the
+# (CORRIDOR_SANITIZE, into build-asan/) and runs it with ctest, the Python module's and the ROS
+# node's tests among them (the Python tests preload the sanitizer runtime; these two run without
+# LeakSanitizer, as ROS 1's own libraries keep memory to the end). Any sanitizer report aborts the
 # process, so it fails the test that caused it; the tools the tests start as child processes are
 # sanitized too, and an abort there is a signal the reliability tests reject.
 # Each test binary is one ctest test here (CORRIDOR_TEST_PER_BINARY): a sanitized binary takes a
@@ -26,7 +26,7 @@ fi
 GENERATOR=($(bash scripts/cmake_generator.sh "$BUILD_DIR"))
 cmake -S . -B "$BUILD_DIR" "${GENERATOR[@]}" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -g1" \
   -DCORRIDOR_SANITIZE=ON -DCORRIDOR_WERROR=ON -DCORRIDOR_BUILD_BENCHMARKS=OFF \
-  -DCORRIDOR_WITH_ROS=OFF -DCORRIDOR_TEST_PER_BINARY=ON "${LINKER[@]}" \
+  -DCORRIDOR_TEST_PER_BINARY=ON "${LINKER[@]}" \
   >/dev/null
 cmake --build "$BUILD_DIR" -j"$JOBS"
 built=$(date +%s)
