@@ -37,7 +37,8 @@ PY
 consumer_flags=()
 python_env=()
 if grep -q "^CORRIDOR_SANITIZE:BOOL=ON" "$BUILD_DIR/CMakeCache.txt"; then
-  consumer_flags=(-DCMAKE_EXE_LINKER_FLAGS=-fsanitize=address,undefined,float-cast-overflow)
+  # The driver links libasan with --no-as-needed left on for the libraries after it: turned back.
+  consumer_flags=("-DCMAKE_EXE_LINKER_FLAGS=-fsanitize=address,undefined,float-cast-overflow -Wl,--as-needed")
   cxx=$(sed -n 's/^CMAKE_CXX_COMPILER:[A-Z]*=//p' "$BUILD_DIR/CMakeCache.txt")
   preload="$("$cxx" -print-file-name=libasan.so) $("$cxx" -print-file-name=libstdc++.so)"
   python_env=(LD_PRELOAD="$preload" ASAN_OPTIONS=detect_leaks=0)
