@@ -46,7 +46,8 @@ cv::Vec3f Shade(const Hit& hit, const Eigen::Vector3d& direction, double distanc
 
 // The colour seen along `direction` (unnormalised: the hit's t times its norm is the distance)
 // from `origin`, which met `hit`: shaded, and on a glossy floor mixed with what the mirrored ray
-// meets (the floor is the plane y = 0, facing up; the mirrored ray starts on it).
+// meets (the floor is the plane y = 0, facing up; the mirrored ray starts on it), that share fading
+// with the mirrored ray's length on a satin floor.
 cv::Vec3f SampleColour(const CorridorScene& scene, const Eigen::Vector3d& origin,
                        const Eigen::Vector3d& direction, const Hit& hit) {
   const double falloff = scene.options.falloff;
@@ -60,9 +61,12 @@ cv::Vec3f SampleColour(const CorridorScene& scene, const Eigen::Vector3d& origin
   const Eigen::Vector3d mirrored(direction.x(), -direction.y(), direction.z());
   const Hit seen = CastRay(scene, Eigen::Vector3d(point.x(), 1e-9, point.z()), mirrored);
   if (!seen.found) return shaded;
+  const double mirrored_length = seen.t * mirrored.norm();
   const cv::Vec3f reflected =
-      Shade(seen, mirrored.normalized(), distance + seen.t * mirrored.norm(), falloff);
-  return shaded * static_cast<float>(1.0 - gloss) + reflected * static_cast<float>(gloss);
+      Shade(seen, mirrored.normalized(), distance + mirrored_length, falloff);
+  const double reach = scene.options.floor_gloss_reach;
+  const double share = reach > 0 ? gloss * std::exp(-mirrored_length / reach) : gloss;
+  return shaded * static_cast<float>(1.0 - share) + reflected * static_cast<float>(share);
 }
 
 }  // namespace

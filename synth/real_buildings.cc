@@ -53,6 +53,10 @@ void SetParts(const std::string& name, Draw* d, SceneOptions* s) {
   s->window_bands = on("windows");
   s->pillars = on("pillars");
   if (name == "glossy") s->floor_gloss = d->Uniform(0.25, 0.6);
+  if (name == "satin") {
+    s->floor_gloss = d->Uniform(0.3, 0.7);
+    s->floor_gloss_reach = d->Uniform(0.03, 0.3);
+  }
 }
 
 Rig PickRig(const std::string& name, Draw* d) {
@@ -114,7 +118,7 @@ ScenePreset MakeScene(const std::string& name, uint32_t seed, const RealBuilding
 const std::vector<std::string>& RealBuildingClasses() {
   static const std::vector<std::string> kClasses = {"rail", "wainscot", "furniture", "floor",
                                                     "carpet", "glass", "windows", "pillars",
-                                                    "head", "low", "mix", "glossy"};
+                                                    "head", "low", "mix", "glossy", "satin"};
   return kClasses;
 }
 

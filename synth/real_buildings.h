@@ -45,6 +45,9 @@ namespace synth {
 //   mix        every part with chance 0.4 (furniture 0-0.8), camera robot 40%, head 40%, low 20%.
 //   glossy     a polished floor: 0.25-0.6 of its colour is the mirrored view (the baseboard and
 //              the walls reflected below the junction). Not part of mix, which keeps its scenes.
+//   satin      a satin floor: 0.3-0.7 of its colour is the mirrored view at a wall's foot, fading
+//              as exp(-d / reach) along the mirrored ray, reach 0.03-0.3 m: a baseboard's blurred
+//              reflection that fades out into the floor. Not part of mix.
 const std::vector<std::string>& RealBuildingClasses();
 
 // The class's base seed (named in docs/results.md): 2900 + 100 x its index in the list above.

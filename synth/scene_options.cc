@@ -31,7 +31,8 @@ bool SceneOptions::Check(std::string* why) const {
          InRange("blur_sigma", blur_sigma, 0, 5, why) &&
          InRange("noise_sigma", noise_sigma, 0, 50, why) &&
          InRange("furniture", furniture, 0, 1, why) &&
-         InRange("floor_gloss", floor_gloss, 0, 0.8, why);
+         InRange("floor_gloss", floor_gloss, 0, 0.8, why) &&
+         InRange("floor_gloss_reach", floor_gloss_reach, 0, 5, why);
 }
 
 }  // namespace synth

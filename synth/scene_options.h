@@ -25,18 +25,21 @@ struct SceneOptions {
 
   // Parts of real buildings that look like junctions (all off by default; their sizes, colours
   // and positions are drawn from the seed; docs/generator.md states their ranges).
-  bool handrails = false;      // Rails on brackets a few cm out from the walls (solids).
-  bool chair_rails = false;    // Mouldings on the walls at chair height (solids).
-  bool wainscot = false;       // Two-tone walls: a lower panel and its cap line (paint).
-  double furniture = 0.0;      // Benches, sofas, lockers, radiators, carts, [0, 1] (solids).
-  bool runner = false;         // A carpet runner along the corridor (paint).
-  bool floor_stripes = false;  // Painted stripes along the corridor near the walls (paint).
-  bool carpet = false;         // Carpeted floor: no grout, fine texture (paint).
-  bool glass_walls = false;    // Glass runs in the walls; a lit room shows behind (plane).
-  bool window_bands = false;   // A row of windows above a sill along one wall.
-  bool pillars = false;        // Pillars standing out of the walls, floor to ceiling (solids).
-  double floor_gloss = 0.0;    // A polished floor: this share of its colour is the mirrored ray's
-                               // (the baseboard's, the walls', reflected), [0, 0.8].
+  bool handrails = false;          // Rails on brackets a few cm out from the walls (solids).
+  bool chair_rails = false;        // Mouldings on the walls at chair height (solids).
+  bool wainscot = false;           // Two-tone walls: a lower panel and its cap line (paint).
+  double furniture = 0.0;          // Benches, sofas, lockers, radiators, carts, [0, 1] (solids).
+  bool runner = false;             // A carpet runner along the corridor (paint).
+  bool floor_stripes = false;      // Painted stripes along the corridor near the walls (paint).
+  bool carpet = false;             // Carpeted floor: no grout, fine texture (paint).
+  bool glass_walls = false;        // Glass runs in the walls; a lit room shows behind (plane).
+  bool window_bands = false;       // A row of windows above a sill along one wall.
+  bool pillars = false;            // Pillars standing out of the walls, floor to ceiling (solids).
+  double floor_gloss = 0.0;        // A polished floor: this share of its colour is the mirrored ray's
+                                   // (the baseboard's, the walls', reflected), [0, 0.8].
+  double floor_gloss_reach = 0.0;  // A satin floor, m: the mirrored share fades as
+                                   // exp(-distance / reach) along the mirrored ray (strong at a
+                                   // wall's foot, gone a little way out); 0 = a mirror, [0, 5].
 
   bool Check(std::string* why) const;
 };

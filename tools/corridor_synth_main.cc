@@ -56,9 +56,12 @@ DEFINE_bool(pillars, false, "Pillars standing out of the walls (single, sequence
 DEFINE_double(floor_gloss, 0.0,
               "A polished floor: the share of its colour that is the mirrored view, [0, 0.8] "
               "(single, sequence)");
+DEFINE_double(floor_gloss_reach, 0.0,
+              "A satin floor: the mirrored view fades as exp(-distance / reach) along its ray, m; "
+              "0 = a mirror, [0, 5] (single, sequence)");
 DEFINE_string(real_class, "all",
               "real_buildings: all, or one class: rail, wainscot, furniture, floor, carpet, glass, "
-              "windows, pillars, head, low, mix, glossy");
+              "windows, pillars, head, low, mix, glossy, satin");
 DEFINE_int32(real_scenes, 10, "real_buildings: scenes per class, [1, 14]");
 DEFINE_int32(real_frames, 20, "real_buildings: frames per scene, [1, 40]");
 
@@ -95,6 +98,7 @@ bool MakeCustomPreset(synth::ScenePreset* preset, std::string* why) {
   s.window_bands = FLAGS_window_bands;
   s.pillars = FLAGS_pillars;
   s.floor_gloss = FLAGS_floor_gloss;
+  s.floor_gloss_reach = FLAGS_floor_gloss_reach;
   if (!s.Check(why)) return false;
   if (FLAGS_width_px < 16 || FLAGS_height_px < 16 || FLAGS_width_px > 8192 ||
       FLAGS_height_px > 8192) {

@@ -259,10 +259,16 @@ TEST(RealBuildingsTest, PaintKeepsTheDepthAndSillsAreNearer) {
 }
 
 // A glossy floor, by hand for a level camera looking straight down the corridor: a wall column
-// has one depth Z, and the floor at row v mirrors the wall point that the matte image shows at
-// row 2 (cy + f h / Z) - v of the same column (its height mirrored about the floor). Without
-// falloff the glossy floor is (1 - g) floor + g that wall pixel; nothing else changes.
-TEST(RealBuildingsTest, AGlossyFloorMirrorsTheWallAndKeepsTheDepth) {
+// has one depth Z, and the floor at row v (depth Zf = f h / (v - cy)) mirrors the wall point that
+// the matte image shows at row 2 (cy + f h / Z) - v of the same column (its height mirrored about
+// the floor). Without falloff the glossy floor is (1 - s) floor + s that wall pixel, s the gloss,
+// times exp(-d / reach) on a satin floor, d = (Z - Zf) |(x, y, 1)| the mirrored ray's length to
+// the wall; nothing else changes. Renders with `reach`, compares with the colours `expected_reach`
+// gives; counts the floor pixels checked and those within 3 levels.
+struct MirrorCheck {
+  int off_floor = 0, off_floor_same = 0, mirrored = 0, mirrored_close = 0;
+};
+MirrorCheck CheckMirror(double gloss, double reach, double expected_reach) {
   const Camera camera = TestCamera();
   // 0.75 m from the right wall: its junction reaches the image's bottom inside the image.
   const CameraPose pose{0.0, 0.0, 0.45, 0.66, 3.0};
@@ -270,10 +276,15 @@ TEST(RealBuildingsTest, AGlossyFloorMirrorsTheWallAndKeepsTheDepth) {
   matte_options.falloff = 0;
   matte_options.baseboard_contrast = 0.8;
   SceneOptions glossy_options = matte_options;
-  glossy_options.floor_gloss = 0.5;
+  glossy_options.floor_gloss = gloss;
+  glossy_options.floor_gloss_reach = reach;
   Frame matte, glossy;
-  ASSERT_TRUE(RenderFrame(matte_options, camera, pose, &matte).ok());
-  ASSERT_TRUE(RenderFrame(glossy_options, camera, pose, &glossy).ok());
+  MirrorCheck out;
+  if (!RenderFrame(matte_options, camera, pose, &matte).ok() ||
+      !RenderFrame(glossy_options, camera, pose, &glossy).ok()) {
+    ADD_FAILURE() << "render failed";
+    return out;
+  }
   EXPECT_EQ(cv::norm(matte.depth, glossy.depth, cv::NORM_INF), 0.0);
   const double f = camera.fy, h = pose.height;
   // The floor's pixels, by the depth of the floor plane at their row.
@@ -286,13 +297,12 @@ TEST(RealBuildingsTest, AGlossyFloorMirrorsTheWallAndKeepsTheDepth) {
   }
   cv::Mat near_floor;  // A pixel's samples may hit the floor up to a pixel away.
   cv::dilate(floor_mask, near_floor, cv::Mat::ones(3, 3, CV_8U));
-  int off_floor = 0, off_floor_same = 0, mirrored = 0, mirrored_close = 0;
   for (int v = 1; v < camera.image_height - 1; ++v) {
     for (int u = 1; u < camera.image_width - 1; ++u) {
       const cv::Vec3b m = matte.bgr.at<cv::Vec3b>(v, u), g = glossy.bgr.at<cv::Vec3b>(v, u);
       if (!near_floor.at<uchar>(v, u)) {
-        ++off_floor;
-        off_floor_same += m == g;
+        ++out.off_floor;
+        out.off_floor_same += m == g;
         continue;
       }
       if (!floor_mask.at<uchar>(v, u)) continue;
@@ -307,16 +317,36 @@ TEST(RealBuildingsTest, AGlossyFloorMirrorsTheWallAndKeepsTheDepth) {
         for (int du = -1; du <= 1; ++du) on_wall &= !floor_mask.at<uchar>(vm + dv, u + du);
       }
       if (!on_wall) continue;
+      const double x = (u - camera.cx) / camera.fx, y = (v - camera.cy) / f;
+      const double length = (wall - h / y) * std::sqrt(x * x + y * y + 1);
+      const double share =
+          expected_reach > 0 ? gloss * std::exp(-length / expected_reach) : gloss;
       const cv::Vec3b w = matte.bgr.at<cv::Vec3b>(vm, u);
-      ++mirrored;
+      ++out.mirrored;
       bool close = true;
-      for (int c = 0; c < 3; ++c) close &= std::abs(g[c] - 0.5 * (m[c] + w[c])) <= 3.0;
-      mirrored_close += close;
+      for (int c = 0; c < 3; ++c) close &= std::abs(g[c] - ((1 - share) * m[c] + share * w[c])) <= 3.0;
+      out.mirrored_close += close;
     }
   }
-  EXPECT_EQ(off_floor_same, off_floor);  // Walls and ceiling are untouched.
-  EXPECT_GT(mirrored, 200);
-  EXPECT_GE(mirrored_close, 0.9 * mirrored) << mirrored_close << " of " << mirrored;
+  return out;
+}
+
+TEST(RealBuildingsTest, AGlossyFloorMirrorsTheWallAndKeepsTheDepth) {
+  const MirrorCheck c = CheckMirror(0.5, 0.0, 0.0);
+  EXPECT_EQ(c.off_floor_same, c.off_floor);  // Walls and ceiling are untouched.
+  EXPECT_GT(c.mirrored, 200);
+  EXPECT_GE(c.mirrored_close, 0.9 * c.mirrored) << c.mirrored_close << " of " << c.mirrored;
+}
+
+// A satin floor: the same mirror, its share fading along the mirrored ray; and it does fade: the
+// mirror's own colours (no fading) do not fit it.
+TEST(RealBuildingsTest, ASatinFloorsReflectionFadesAlongTheMirroredRay) {
+  const MirrorCheck c = CheckMirror(0.6, 0.15, 0.15);
+  EXPECT_EQ(c.off_floor_same, c.off_floor);
+  EXPECT_GT(c.mirrored, 200);
+  EXPECT_GE(c.mirrored_close, 0.9 * c.mirrored) << c.mirrored_close << " of " << c.mirrored;
+  const MirrorCheck mirror = CheckMirror(0.6, 0.15, 0.0);
+  EXPECT_LT(mirror.mirrored_close, 0.5 * mirror.mirrored);
 }
 
 // geometry.md by hand: n = (0, cos t, sin t), m = (cos p, sin t sin p, -cos t sin p) for the
@@ -407,8 +437,16 @@ TEST(RealBuildingsTest, PresetClassesHaveTheirPartsAndCameras) {
     if (cls == "glossy") {
       EXPECT_GE(s.floor_gloss, 0.25) << preset.name;
       EXPECT_LE(s.floor_gloss, 0.6) << preset.name;
+    } else if (cls == "satin") {
+      EXPECT_GE(s.floor_gloss, 0.3) << preset.name;
+      EXPECT_LE(s.floor_gloss, 0.7) << preset.name;
+      EXPECT_GE(s.floor_gloss_reach, 0.03) << preset.name;
+      EXPECT_LE(s.floor_gloss_reach, 0.3) << preset.name;
     } else {
       EXPECT_EQ(s.floor_gloss, 0.0) << preset.name;
+    }
+    if (cls != "satin") {
+      EXPECT_EQ(s.floor_gloss_reach, 0.0) << preset.name;
     }
     for (const CameraPose& pose : preset.poses) {
       EXPECT_EQ(pose.height, preset.camera.mount_height);
