@@ -37,10 +37,11 @@ PY
 consumer_flags=()
 python_env=()
 if grep -q "^CORRIDOR_SANITIZE:BOOL=ON" "$BUILD_DIR/CMakeCache.txt"; then
-  # The driver links libasan with --no-as-needed left on for the libraries after it: turned back.
-  consumer_flags=("-DCMAKE_EXE_LINKER_FLAGS=-fsanitize=address,undefined,float-cast-overflow -Wl,--as-needed")
-  cxx=$(sed -n 's/^CMAKE_CXX_COMPILER:[A-Z]*=//p' "$BUILD_DIR/CMakeCache.txt")
-  preload="$("$cxx" -print-file-name=libasan.so) $("$cxx" -print-file-name=libstdc++.so)"
+  # The build's own sanitizer link flag and Python preload (CMakeLists.txt). The driver links
+  # libasan with --no-as-needed left on for the libraries after it: turned back.
+  link_flag=$(sed -n 's/^CORRIDOR_SANITIZER_LINK_FLAG:INTERNAL=//p' "$BUILD_DIR/CMakeCache.txt")
+  preload=$(sed -n 's/^CORRIDOR_SANITIZER_PRELOAD:INTERNAL=//p' "$BUILD_DIR/CMakeCache.txt")
+  consumer_flags=("-DCMAKE_EXE_LINKER_FLAGS=$link_flag -Wl,--as-needed")
   python_env=(LD_PRELOAD="$preload" ASAN_OPTIONS=detect_leaks=0)
 fi
 cmake -S examples/cpp_consumer -B "$work/consumer" -DCMAKE_PREFIX_PATH="$work/prefix" \
