@@ -326,6 +326,12 @@ Status OneSideOnly(const PairSearch& chosen, const std::vector<Eigen::Vector2d>&
   return status;
 }
 
+// Where the pair's two junction lines meet; `otherwise` when they are parallel.
+Eigen::Vector2d WhereJunctionsMeet(const JunctionPair& pair, const Eigen::Vector2d& otherwise) {
+  const Eigen::Vector3d x = pair.left.line.cross(pair.right.line);
+  return std::abs(x.z()) > 1e-12 ? Eigen::Vector2d(x.head<2>() / x.z()) : otherwise;
+}
+
 // Stage: the chosen pair's final lines (and the lower partners the baseboard rule left), refined
 // on their edge pixels and refitted at full resolution, and their vanishing point.
 void RefineChosenPair(const PairSearch& chosen, const std::vector<Eigen::Vector2d>& edges,
@@ -356,16 +362,12 @@ void RefineChosenPair(const PairSearch& chosen, const std::vector<Eigen::Vector2
   for (JunctionLine* line : {&result->left, &result->right}) refit.Apply(line);
   if (result->has_left_lower) refit.Apply(&result->left_lower);
   if (result->has_right_lower) refit.Apply(&result->right_lower);
-  Eigen::Vector3d vp = result->left.line.cross(result->right.line);
-  const Eigen::Vector2d refined =
-      std::abs(vp.z()) > 1e-12 ? Eigen::Vector2d(vp.head<2>() / vp.z()) : pair.vanishing_point;
+  const Eigen::Vector2d refined = WhereJunctionsMeet(*result, pair.vanishing_point);
   if (lc.foot_of >= 0) TurnJunctionToFoot(lc.line, lc.foot_turn_deg, refined, true, &result->left);
   if (rc.foot_of >= 0) {
     TurnJunctionToFoot(rc.line, rc.foot_turn_deg, refined, false, &result->right);
   }
-  vp = result->left.line.cross(result->right.line);
-  result->vanishing_point =
-      std::abs(vp.z()) > 1e-12 ? Eigen::Vector2d(vp.head<2>() / vp.z()) : pair.vanishing_point;
+  result->vanishing_point = WhereJunctionsMeet(*result, pair.vanishing_point);
 }
 
 // Stage: on a polished floor, a junction taken at its baseboard's reflection's lower edge moves up
@@ -385,8 +387,7 @@ void TakeJunctionsAboveReflections(const cv::Mat& color, JunctionPair* result) {
     TurnJunctionToFoot(LineThrough(line.near_end, line.far_end), turn[left ? 0 : 1], vp, left,
                        &line);
   }
-  const Eigen::Vector3d x = result->left.line.cross(result->right.line);
-  if (std::abs(x.z()) > 1e-12) result->vanishing_point = x.head<2>() / x.z();
+  result->vanishing_point = WhereJunctionsMeet(*result, vp);
 }
 
 // Stage: the floor between the junctions (result->floor_texture, when enough of it is seen);

@@ -15,11 +15,8 @@ namespace {
 
 constexpr double kDeg = testing_util::kBandDeg;
 const Eigen::Vector2d& kVp = testing_util::kBandVp;
+using testing_util::BandDown;
 using testing_util::DrawByAngle;
-
-// The direction from the vanishing point of a left (right) junction `angle_deg` below the
-// horizontal.
-Eigen::Vector2d Down(double angle_deg, bool left) { return testing_util::BandDown(angle_deg, left); }
 
 // A MergedLine from the vanishing point along `direction`, from `r0` to `r1` px.
 MergedLine LineAlong(const Eigen::Vector2d& direction, double r0, double r1) {
@@ -42,14 +39,14 @@ TEST(LowerEdgeTest, FindsABaseboardsFootOnACarpet) {
       if (angle < 33) return cv::Vec3b(80, 80, 80);
       return Carpet(rng);
     });
-    const MergedLine top = LineAlong(Down(30, left), 20, 340);
+    const MergedLine top = LineAlong(BandDown(30, left), 20, 340);
     MergedLine foot;
     double turn = 0;
     ASSERT_TRUE(FindLowerEdge(image, 0, top, kVp, left, 6.0, &foot, &turn)) << left;
     EXPECT_NEAR(turn, 3.0, 0.15) << left;
     // The foot passes through the vanishing point, along 33 degrees.
     EXPECT_NEAR(foot.line.dot(kVp.homogeneous()), 0, 0.5);
-    EXPECT_NEAR(foot.line.dot((kVp + 300 * Down(33, left)).homogeneous()), 0, 1.0);
+    EXPECT_NEAR(foot.line.dot((kVp + 300 * BandDown(33, left)).homogeneous()), 0, 1.0);
     // The same image with the ROI's top rows cut off gives the same foot.
     MergedLine cut;
     double cut_turn = 0;
@@ -71,7 +68,7 @@ TEST(LowerEdgeTest, AThinJointBeyondTheFootIsNotTheBandAgain) {
       const int dip = static_cast<int>(std::lround(25 * std::exp(-d * d)));
       return cv::Vec3b(84 - dip, 92 - dip, 84 - dip);
     });
-    const MergedLine top = LineAlong(Down(30, left), 20, 340);
+    const MergedLine top = LineAlong(BandDown(30, left), 20, 340);
     MergedLine foot;
     double turn = 0;
     ASSERT_TRUE(FindLowerEdge(image, 0, top, kVp, left, 6.0, &foot, &turn)) << left;
@@ -87,7 +84,7 @@ TEST(LowerEdgeTest, AStripeBesideTheWallIsNoBand) {
     if (angle >= 33 && angle < 35) return cv::Vec3b(20, 20, 20);
     return cv::Vec3b(90, 110, 140);
   });
-  const MergedLine junction = LineAlong(Down(30, true), 20, 340);
+  const MergedLine junction = LineAlong(BandDown(30, true), 20, 340);
   MergedLine foot;
   double turn = 0;
   EXPECT_FALSE(FindLowerEdge(image, 0, junction, kVp, true, 6.0, &foot, &turn));
@@ -99,13 +96,13 @@ TEST(LowerEdgeTest, APlainFloorHasNoEdge) {
   });
   MergedLine foot;
   double turn = 0;
-  EXPECT_FALSE(FindLowerEdge(image, 0, LineAlong(Down(30, false), 20, 340), kVp, false, 6.0,
+  EXPECT_FALSE(FindLowerEdge(image, 0, LineAlong(BandDown(30, false), 20, 340), kVp, false, 6.0,
                              &foot, &turn));
 }
 
 TEST(LowerEdgeTest, RefusesWhatItCannotLookAt) {
   const cv::Mat image(480, 640, CV_8UC3, cv::Scalar(0, 0, 0));
-  const MergedLine top = LineAlong(Down(30, true), 20, 340);
+  const MergedLine top = LineAlong(BandDown(30, true), 20, 340);
   MergedLine foot;
   double turn = 0;
   EXPECT_FALSE(FindLowerEdge(cv::Mat(), 0, top, kVp, true, 6.0, &foot, &turn));
@@ -113,20 +110,20 @@ TEST(LowerEdgeTest, RefusesWhatItCannotLookAt) {
   EXPECT_FALSE(FindLowerEdge(image, 0, top, kVp, true, 0.0, &foot, &turn));
   EXPECT_FALSE(FindLowerEdge(image, 0, top, Eigen::Vector2d(NAN, 0), true, 6.0, &foot, &turn));
   // A line 3 px long near the vanishing point: its band would be under 4 px everywhere.
-  EXPECT_FALSE(FindLowerEdge(image, 0, LineAlong(Down(30, true), 1, 4), kVp, true, 6.0, &foot,
+  EXPECT_FALSE(FindLowerEdge(image, 0, LineAlong(BandDown(30, true), 1, 4), kVp, true, 6.0, &foot,
                              &turn));
 }
 
 TEST(LowerEdgeTest, TurnsTowardTheFloor) {
   for (const bool left : {true, false}) {
-    const MergedLine line = LineAlong(Down(30, left), 20, 340);
+    const MergedLine line = LineAlong(BandDown(30, left), 20, 340);
     const Eigen::Vector3d turned =
-        TurnTowardFloor(line.line, kVp + 300 * Down(30, left), kVp, left, 10.0);
+        TurnTowardFloor(line.line, kVp + 300 * BandDown(30, left), kVp, left, 10.0);
     EXPECT_NEAR(std::hypot(turned.x(), turned.y()), 1.0, 1e-12);
     EXPECT_GE(turned.y(), 0);
     EXPECT_NEAR(turned.dot(kVp.homogeneous()), 0, 1e-9);
     // 40 degrees below the horizontal: toward straight down.
-    EXPECT_NEAR(turned.dot((kVp + 100 * Down(40, left)).homogeneous()), 0, 1e-9) << left;
+    EXPECT_NEAR(turned.dot((kVp + 100 * BandDown(40, left)).homogeneous()), 0, 1e-9) << left;
   }
 }
 
