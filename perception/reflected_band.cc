@@ -18,9 +18,9 @@ constexpr double kMaxSlopeDeg = 80.0;  // Steeper lines: their slopes are not me
 constexpr double kMinContrast = 30.0;  // Least wall/baseboard difference, summed over channels.
 // The floor's gloss, the reflection's step over the baseboard's, in this range, to within this
 // fraction of the baseboard's step; and the reflection unlike the baseboard by this fraction of it.
-constexpr double kMinGloss = 0.15, kMaxGloss = 0.85, kMaxGlossResidual = 0.25, kMinUnlike = 0.08;
+constexpr double kMinGloss = 0.15, kMaxGloss = 0.85, kMaxGlossResidual = 0.25, kMinUnlike = 0.05;
 constexpr double kMinUnlikeLevels = 9.0;  // And by at least this, summed over channels.
-// How far (candidates) the band's inner edge may lie from the middle in slope.
+// How far about the middle in slope (candidates) the step from baseboard to reflection is sought.
 constexpr double kMaxMiddleOffset = 3.0;
 
 }  // namespace
@@ -105,18 +105,16 @@ bool FindReflectedJunction(const cv::Mat& image, const JunctionLine& junction,
       unlike < std::max(kMinUnlikeLevels, kMinUnlike * contrast)) {
     return false;
   }
-  // The baseboard meets its reflection where the mirror puts the junction: the band's largest
-  // inner change lies at the middle, and most of the change from baseboard to reflection is there.
-  int inner = 0;
-  double inner_change = 0;
-  for (int k = top + 5; k <= -5; ++k) {  // Clear of the blur of the band's two edges.
-    if (change_at(k) > inner_change) inner_change = change_at(k), inner = k;
-  }
-  // change_at sums two candidates on each side, twice the step between two flat bands: at least
-  // half the baseboard-to-reflection change happens there.
-  if (std::abs(inner - middle) > kMaxMiddleOffset || inner_change < unlike) {
-    return false;
-  }
+  // The baseboard meets its reflection where the mirror puts the junction: at the middle, the
+  // band changes by most of the change from baseboard to reflection. (change_at sums two
+  // candidates on each side: twice the step between two flat bands, so at least half of it.)
+  // Elsewhere in the band a door's or a joint's reflection may change it as much: only the
+  // middle is asked for a step.
+  double middle_change = 0;
+  const int lo = std::max(top + 5, static_cast<int>(std::floor(middle - kMaxMiddleOffset)));
+  const int hi = std::min(-5, static_cast<int>(std::ceil(middle + kMaxMiddleOffset)));
+  for (int k = lo; k <= hi; ++k) middle_change = std::max(middle_change, change_at(k));
+  if (middle_change < unlike) return false;
   *turn_deg = middle * kStepDeg;
   return true;
 }

@@ -1,7 +1,8 @@
 // FindReflectedJunction on drawn bands below a line through a vanishing point, coloured by their
 // angle below the horizontal: a baseboard and its reflection on a polished floor (the junction at
-// the band's middle in slope, computed by hand), a baseboard above a true junction on a matte
-// floor, a band whose lower part is no blend of the baseboard and the floor, and bad input.
+// the band's middle in slope, computed by hand), with a stripe inside the reflection, nearly the
+// baseboard's colour, a baseboard above a true junction on a matte floor, a band whose lower part
+// is no blend of the baseboard and the floor, and bad input.
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -60,6 +61,39 @@ TEST(ReflectedBandTest, APolishedFloorsReflectionPutsTheJunctionAtTheBandsMiddle
         << left;
     EXPECT_NEAR(turn, kJunction - kBottom, 0.15) << left;
   }
+}
+
+TEST(ReflectedBandTest, AStripeInsideTheReflectionLeavesTheMiddleFound) {
+  // A dark stripe mirrored inside the lower part (a door's threshold, a joint): it changes the
+  // band more than the step at the middle does, and the junction is still the middle.
+  const double gloss = 0.4;
+  const double stripe_from = kJunction + 0.5 * (kBottom - kJunction);
+  const cv::Mat image = DrawByAngle(true, [&](double angle) {
+    if (angle < kTop) return Blend(kWall, kWall, 0);
+    if (angle < kJunction) return Blend(kBoard, kBoard, 0);
+    if (angle >= stripe_from && angle < stripe_from + 0.3) return cv::Vec3b(10, 10, 10);
+    if (angle < kBottom) return Blend(kMatte, kBoard, gloss);
+    return Blend(kMatte, kWall, gloss);
+  });
+  double turn = 0;
+  ASSERT_TRUE(FindReflectedJunction(image, LineAt(kBottom, true), kVp, true, 12.0, &turn));
+  EXPECT_NEAR(turn, kJunction - kBottom, 0.15);
+}
+
+TEST(ReflectedBandTest, AReflectionNearlyTheBaseboardsColourIsFound) {
+  // A floor whose own colour is near the baseboard's: the reflection differs from the baseboard
+  // by (1 - gloss) |floor - baseboard| = 0.5 * 56 = 28 levels, 6.5% of the wall-to-baseboard
+  // step (430 levels).
+  const cv::Vec3d floor(80, 80, 86);
+  const cv::Mat image = DrawByAngle(false, [&](double angle) {
+    if (angle < kTop) return Blend(kWall, kWall, 0);
+    if (angle < kJunction) return Blend(kBoard, kBoard, 0);
+    if (angle < kBottom) return Blend(floor, kBoard, 0.5);
+    return Blend(floor, kWall, 0.5);
+  });
+  double turn = 0;
+  ASSERT_TRUE(FindReflectedJunction(image, LineAt(kBottom, false), kVp, false, 12.0, &turn));
+  EXPECT_NEAR(turn, kJunction - kBottom, 0.15);
 }
 
 TEST(ReflectedBandTest, ABaseboardAboveATrueJunctionIsLeftAlone) {
