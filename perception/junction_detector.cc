@@ -374,15 +374,25 @@ void RefineChosenPair(const PairSearch& chosen, const std::vector<Eigen::Vector2
 // to the middle of the band (reflected_band.h), and the vanishing point with it.
 void TakeJunctionsAboveReflections(const cv::Mat& color, JunctionPair* result) {
   const Eigen::Vector2d vp = result->vanishing_point;
-  // One floor mirrors both walls' baseboards: both bands must read as reflections.
+  // One floor mirrors both walls' baseboards: both walls must show a reflection, below the
+  // junction (to be moved up to the band's middle) or about it (the junction already there).
   double turn[2] = {0, 0};
+  bool reflected[2] = {false, false};
   for (const bool left : {true, false}) {
-    if (!FindReflectedJunction(color, left ? result->left : result->right, vp, left,
-                               2 * kBaseboardMaxTurnDeg, &turn[left ? 0 : 1])) {
+    const int side = left ? 0 : 1;
+    reflected[side] = FindReflectedJunction(color, left ? result->left : result->right, vp, left,
+                                            2 * kBaseboardMaxTurnDeg, &turn[side]);
+  }
+  if (!reflected[0] && !reflected[1]) return;
+  for (const bool left : {true, false}) {
+    if (!reflected[left ? 0 : 1] &&
+        !JunctionAtReflectedBandsMiddle(color, left ? result->left : result->right, vp, left,
+                                        2 * kBaseboardMaxTurnDeg)) {
       return;
     }
   }
   for (const bool left : {true, false}) {
+    if (!reflected[left ? 0 : 1]) continue;
     JunctionLine& line = left ? result->left : result->right;
     TurnJunctionToFoot(LineThrough(line.near_end, line.far_end), turn[left ? 0 : 1], vp, left,
                        &line);

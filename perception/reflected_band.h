@@ -25,4 +25,11 @@ bool FindReflectedJunction(const cv::Mat& image, const JunctionLine& junction,
                            const Eigen::Vector2d& vanishing_point, bool left, double max_turn_deg,
                            double* turn_deg);
 
+// Whether `junction` already lies at the middle of such a band: the baseboard above it and its
+// reflection below it, down to the reflection's lower edge as far below in slope as the band's top
+// is above. A wall whose junction was found between the two, on the same polished floor.
+bool JunctionAtReflectedBandsMiddle(const cv::Mat& image, const JunctionLine& junction,
+                                    const Eigen::Vector2d& vanishing_point, bool left,
+                                    double max_turn_deg);
+
 }  // namespace corridor

@@ -2,7 +2,8 @@
 // angle below the horizontal: a baseboard and its reflection on a polished floor (the junction at
 // the band's middle in slope, computed by hand), with a stripe inside the reflection, nearly the
 // baseboard's colour, a baseboard above a true junction on a matte floor, a band whose lower part
-// is no blend of the baseboard and the floor, and bad input.
+// is no blend of the baseboard and the floor, and bad input. JunctionAtReflectedBandsMiddle on the
+// same bands.
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -94,6 +95,25 @@ TEST(ReflectedBandTest, AReflectionNearlyTheBaseboardsColourIsFound) {
   double turn = 0;
   ASSERT_TRUE(FindReflectedJunction(image, LineAt(kBottom, false), kVp, false, 12.0, &turn));
   EXPECT_NEAR(turn, kJunction - kBottom, 0.15);
+}
+
+TEST(ReflectedBandTest, AJunctionAlreadyAtTheBandsMiddleIsTold) {
+  // The same polished floor, the junction found where the baseboard meets its reflection: the band
+  // lies about it. At the reflection's lower edge, or on a matte floor, it does not.
+  const cv::Mat polished = DrawByAngle(true, [&](double angle) {
+    if (angle < kTop) return Blend(kWall, kWall, 0);
+    if (angle < kJunction) return Blend(kBoard, kBoard, 0);
+    if (angle < kBottom) return Blend(kMatte, kBoard, 0.4);
+    return Blend(kMatte, kWall, 0.4);
+  });
+  const cv::Mat matte = DrawByAngle(true, [&](double angle) {
+    if (angle < kTop) return Blend(kWall, kWall, 0);
+    if (angle < kJunction) return Blend(kBoard, kBoard, 0);
+    return Blend(kMatte, kMatte, 0);
+  });
+  EXPECT_TRUE(JunctionAtReflectedBandsMiddle(polished, LineAt(kJunction, true), kVp, true, 12.0));
+  EXPECT_FALSE(JunctionAtReflectedBandsMiddle(polished, LineAt(kBottom, true), kVp, true, 12.0));
+  EXPECT_FALSE(JunctionAtReflectedBandsMiddle(matte, LineAt(kJunction, true), kVp, true, 12.0));
 }
 
 TEST(ReflectedBandTest, ABaseboardAboveATrueJunctionIsLeftAlone) {

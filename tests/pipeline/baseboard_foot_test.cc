@@ -77,11 +77,13 @@ TEST(BaseboardFootTest, APolishedFloorsReflectionOfTheBaseboardIsNotTheFloorsEdg
   }
 }
 
-TEST(BaseboardFootTest, AReflectionIsFoundThroughADoorAndNearlyTheBaseboardsColour) {
+TEST(BaseboardFootTest, AReflectionIsFoundThroughADoorNearlyTheBaseboardsColourOrAboutTheJunction) {
   // Glossy scene 5: a grey baseboard on a grey-brown floor, its reflection unlike it by only 7% of
   // the wall-to-baseboard step. Scene 8: beside a door, a dark line mirrored inside the left band
-  // changes it more than the step at the band's middle does. Both were 14% too narrow.
-  for (const auto& [scene, frame] : {std::pair<int, int>{5, 5}, {8, 5}}) {
+  // changes it more than the step at the band's middle does. Both were 14% too narrow. Scene 3,
+  // frame 2: the right junction was found between baseboard and reflection, only the left at the
+  // reflection's lower edge (6% too narrow); the right band about its junction lets the left move.
+  for (const auto& [scene, frame] : {std::pair<int, int>{5, 5}, {8, 5}, {3, 2}}) {
     EXPECT_LT(WidthError("glossy", scene, frame), 0.03) << scene << "/" << frame;
   }
 }
