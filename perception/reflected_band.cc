@@ -22,7 +22,6 @@ constexpr double kMinGloss = 0.15, kMaxGloss = 0.85, kMaxGlossResidual = 0.25, k
 constexpr double kMinUnlikeLevels = 9.0;  // And by at least this, summed over channels.
 // How far about the middle in slope (candidates) the step from baseboard to reflection is sought.
 constexpr double kMaxMiddleOffset = 3.0;
-constexpr int kStepWindow = 6;  // A step is measured from 6-3 candidates before it to 3-6 after.
 
 double L1(const cv::Vec3d& c) { return std::abs(c[0]) + std::abs(c[1]) + std::abs(c[2]); }
 
@@ -113,19 +112,15 @@ bool ReadsAsReflection(const TurnedProfile& p, int top, double middle, int botto
       unlike < std::max(kMinUnlikeLevels, kMinUnlike * contrast)) {
     return false;
   }
-  // At least half of that change happens at the middle, measured between the four candidates
-  // on either side (kStepWindow), which hold a step blurred over half a degree. Elsewhere in the
-  // band a door's or a joint's reflection may change it as much: only the middle is asked for a
-  // step. The windows keep clear of the blur of the band's two edges.
+  // ChangeAt sums two candidates on each side: twice the step between two flat bands, so a
+  // change of at least `unlike` is at least half of it. Elsewhere in the band a door's or a
+  // joint's reflection may change it as much: only the middle is asked for a step. The search
+  // keeps clear of the blur of the band's two edges.
   double middle_change = 0;
-  const int reach = kStepWindow + 2;
-  for (int k = std::max(top + reach, static_cast<int>(std::floor(middle - kMaxMiddleOffset)));
-       k <= std::min(bottom - reach, static_cast<int>(std::ceil(middle + kMaxMiddleOffset)));
-       ++k) {
-    middle_change = std::max(middle_change, L1(p.Mean(k - kStepWindow, k - kStepWindow + 3) -
-                                               p.Mean(k + kStepWindow - 3, k + kStepWindow)));
-  }
-  if (2 * middle_change < unlike) return false;
+  p.LargestChange(std::max(top + 5, static_cast<int>(std::floor(middle - kMaxMiddleOffset))),
+                  std::min(bottom - 5, static_cast<int>(std::ceil(middle + kMaxMiddleOffset))),
+                  &middle_change);
+  if (middle_change < unlike) return false;
   if (!bottom_edge) return true;
   double bottom_change = 0;
   p.LargestChange(bottom - static_cast<int>(kMaxMiddleOffset),
