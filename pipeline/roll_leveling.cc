@@ -34,6 +34,16 @@ void LevelRoll(const DepthRecoverer& level, const Camera& camera,
                     turned.status.message() + "): recovered as seen");
     return;
   }
+  // A level frame less sure of its layout than the frame as seen: the turn has not made the
+  // evidence clearer, and the frame's own answer stands.
+  if (turned.confidence < result->confidence) {
+    std::ostringstream why;
+    why.precision(2);
+    why << std::fixed << note.str() << " found, but the level frame is less sure of its layout ("
+        << turned.confidence << " against " << result->confidence << "): recovered as seen";
+    result->AddNote(why.str());
+    return;
+  }
   // The depth back in the frame's pixels: depth(p) = level depth(RollTurn(-roll) p).
   cv::Mat depth;
   cv::warpAffine(turned.depth, depth, to_level, turned.depth.size(),

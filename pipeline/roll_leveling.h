@@ -12,7 +12,7 @@ namespace corridor {
 // that: its geometry, ceiling, end wall, confidence and depth (turned back to the frame's
 // pixels, NaN where the turned frame had none), with result->roll set and a note. The junction
 // lines stay the frame's own (its pixels). When the level frame is not ok, the frame keeps its
-// own answer, with a note.
+// own answer, with a note; so it does when the level frame's confidence is lower than its own.
 void LevelRoll(const DepthRecoverer& level, const Camera& camera,
                const CorridorGeometry* previous, RecoverDepthResult* result);
 
