@@ -12,6 +12,7 @@
 #include <opencv2/core.hpp>
 
 #include "core/round_half_away.h"
+#include "kernels/line_colour.h"
 
 namespace corridor {
 
@@ -38,12 +39,11 @@ inline cv::Vec3d ColourAt(const cv::Mat& roi, int roi_top, const Eigen::Vector2d
   return cv::Vec3d(c[0], c[1], c[2]);
 }
 
-// The mean colour at the points `vp + r d`, r in `radii` (not empty).
+// The mean colour at the points `vp + r d`, r in `radii` (not empty): ColourAt's, summed in order.
 inline cv::Vec3d MeanColourAlong(const cv::Mat& roi, int roi_top, const Eigen::Vector2d& vp,
                                  const Eigen::Vector2d& d, const std::vector<double>& radii) {
-  cv::Vec3d sum(0, 0, 0);
-  for (const double r : radii) sum += ColourAt(roi, roi_top, vp + r * d);
-  return sum / static_cast<double>(radii.size());
+  return MeanColourAtRadii(roi, roi_top, vp.x(), vp.y(), d.x(), d.y(), radii.data(),
+                           static_cast<int>(radii.size()));
 }
 
 }  // namespace corridor
