@@ -376,26 +376,24 @@ void TakeJunctionsAboveReflections(const cv::Mat& color, JunctionPair* result) {
   const Eigen::Vector2d vp = result->vanishing_point;
   // One floor mirrors both walls' baseboards: both walls must show a reflection, below the
   // junction (to be moved up to the band's middle) or about it (the junction already there).
+  JunctionLine* lines[2] = {&result->left, &result->right};  // Left, right.
   double turn[2] = {0, 0};
   bool reflected[2] = {false, false};
-  for (const bool left : {true, false}) {
-    const int side = left ? 0 : 1;
-    reflected[side] = FindReflectedJunction(color, left ? result->left : result->right, vp, left,
+  for (int side = 0; side < 2; ++side) {
+    reflected[side] = FindReflectedJunction(color, *lines[side], vp, side == 0,
                                             2 * kBaseboardMaxTurnDeg, &turn[side]);
   }
   if (!reflected[0] && !reflected[1]) return;
-  for (const bool left : {true, false}) {
-    if (!reflected[left ? 0 : 1] &&
-        !JunctionAtReflectedBandsMiddle(color, left ? result->left : result->right, vp, left,
-                                        2 * kBaseboardMaxTurnDeg)) {
+  for (int side = 0; side < 2; ++side) {
+    if (!reflected[side] && !JunctionAtReflectedBandsMiddle(color, *lines[side], vp, side == 0,
+                                                            2 * kBaseboardMaxTurnDeg)) {
       return;
     }
   }
-  for (const bool left : {true, false}) {
-    if (!reflected[left ? 0 : 1]) continue;
-    JunctionLine& line = left ? result->left : result->right;
-    TurnJunctionToFoot(LineThrough(line.near_end, line.far_end), turn[left ? 0 : 1], vp, left,
-                       &line);
+  for (int side = 0; side < 2; ++side) {
+    if (!reflected[side]) continue;
+    JunctionLine& line = *lines[side];
+    TurnJunctionToFoot(LineThrough(line.near_end, line.far_end), turn[side], vp, side == 0, &line);
   }
   result->vanishing_point = WhereJunctionsMeet(*result, vp);
 }
