@@ -31,6 +31,8 @@ void VisitRecoverDepthOptions(RecoverDepthOptions* o, OptionVisitor* v) {
   v->Double("hough_angle_window", &o->perception.hough_angle_window_deg);
   v->Int("relaxed_hough_threshold", &o->perception.relaxed_hough_threshold);
   v->Double("min_confidence", &o->min_confidence);
+  v->Double("min_corridor_width", &o->min_width);
+  v->Double("max_corridor_width", &o->max_width);
 }
 
 }  // namespace corridor

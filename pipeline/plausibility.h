@@ -9,8 +9,18 @@
 
 namespace corridor {
 
-// Is the estimate a corridor? kImplausibleGeometry with the reason otherwise.
+// Is the estimate a corridor? kImplausibleGeometry with the reason otherwise: CheckPlausibleShape
+// and CheckCorridorWidth.
 Status CheckPlausible(const CorridorGeometry& geometry, const RecoverDepthOptions& options);
+
+// Finite, yaw and pitch within options' bounds, the camera between the walls: what a layout tried
+// as a hypothesis (the solver's first answer, a wall the ceiling's checks would move) must be.
+Status CheckPlausibleShape(const CorridorGeometry& geometry, const RecoverDepthOptions& options);
+
+// The width within [options.min_width, options.max_width]: asked of the layout a frame reports,
+// after the checks that may move its walls (a rail taken for a junction on both walls gives a
+// width that a baseboard or ceiling check may bring back).
+Status CheckCorridorWidth(const CorridorGeometry& geometry, const RecoverDepthOptions& options);
 
 // Does the estimate explain the junctions it was fitted to? kImplausibleGeometry when the RMS
 // pixel distance of the observation's points to the junction lines the geometry predicts exceeds

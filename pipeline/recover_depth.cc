@@ -209,7 +209,7 @@ Status DepthRecoverer::ReconstructAsSeen(const Camera& camera, RecoverDepthResul
     }
     geometry = result->solver_summary.estimate;
     geometry.camera_height = camera.mount_height;
-    status = CheckPlausible(geometry, options_);
+    status = CheckPlausibleShape(geometry, options_);
     if (status.ok()) status = CheckLineFit(geometry, observation, camera, options_);
     if (!status.ok()) return finish(status);
   }
@@ -313,6 +313,9 @@ Status DepthRecoverer::ReconstructAsSeen(const Camera& camera, RecoverDepthResul
     }
   }
   result->times.ceiling = SecondsSince(stage);
+  // The width bounds on the layout reported, after the checks and holds that may move its walls.
+  status = CheckCorridorWidth(geometry, options_);
+  if (!status.ok()) return finish(status);
   stage = Clock::now();
   if (search_end_wall) {
     status =

@@ -12,7 +12,7 @@ bool RecoverDepthOptions::Check(std::string* why) const {
   } else if (solver_evidence != "lines" && solver_evidence != "edges") {
     reason = "solver_evidence must be lines or edges, not '" + solver_evidence + "'";
   } else if (!(min_width > 0 && min_width < max_width && std::isfinite(max_width))) {
-    reason = "width bounds must satisfy 0 < min_width < max_width";
+    reason = "width bounds must satisfy 0 < min_corridor_width < max_corridor_width";
   } else if (!(max_abs_yaw > 0 && max_abs_yaw < M_PI / 2)) {
     reason = "max_abs_yaw must be in (0, pi/2)";
   } else if (!(max_abs_pitch > 0 && max_abs_pitch < M_PI / 2)) {

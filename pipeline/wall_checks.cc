@@ -63,7 +63,7 @@ bool CheckBaseboards(const WallCheckInputs& in, CorridorGeometry* geometry,
     if (!in.solver.Solve(observation, nullptr, &summary).ok()) continue;
     CorridorGeometry g = summary.estimate;
     g.camera_height = in.camera.mount_height;
-    if (!CheckPlausible(g, options).ok() ||
+    if (!CheckPlausibleShape(g, options).ok() ||
         !CheckLineFit(g, observation, in.camera, options).ok()) {
       continue;
     }
@@ -135,7 +135,8 @@ bool TakeFootOfSplitWall(const WallCheckInputs& in, CorridorGeometry* geometry,
   if (!in.solver.Solve(observation, nullptr, &summary).ok()) return false;
   CorridorGeometry g = summary.estimate;
   g.camera_height = in.camera.mount_height;
-  if (!CheckPlausible(g, options).ok() || !CheckLineFit(g, observation, in.camera, options).ok()) {
+  if (!CheckPlausibleShape(g, options).ok() ||
+      !CheckLineFit(g, observation, in.camera, options).ok()) {
     return false;
   }
   CeilingEstimate moved;
@@ -172,7 +173,7 @@ Status MoveInnerWall(const WallCheckInputs& in, const CorridorGeometry* previous
   const InnerLineCheck check =
       CheckInnerLine(in.search.bgr, in.search.camera, options.ceiling, options.inner_line, &moved,
                      in.edges, {result->junctions.has_left_lower, result->junctions.has_right_lower});
-  if (!check.moved || !CheckPlausible(moved, options).ok()) return Status::Ok();
+  if (!check.moved || !CheckPlausibleShape(moved, options).ok()) return Status::Ok();
   CeilingEstimate ceiling;
   const Status status = SearchCeiling(in, &moved, &ceiling);
   if (!status.ok()) return status;

@@ -85,6 +85,12 @@ DEFINE_string(sequence, "auto",
 DEFINE_double(min_confidence, corridor::RecoverDepthOptions().min_confidence,
               "Refuse a frame whose confidence (the evidence for its layout, 0-1) is below this; "
               "0 = never refuse on confidence");
+DEFINE_double(min_corridor_width, corridor::RecoverDepthOptions().min_width,
+              "Refuse a frame whose corridor width is narrower than this, m");
+DEFINE_double(max_corridor_width, corridor::RecoverDepthOptions().max_width,
+              "Refuse a frame whose corridor width is wider than this, m: wider than a corridor "
+              "(a hall), or a rail or a wainscot's top taken for the floor's edge. Raise it for "
+              "wide halls");
 DEFINE_double(max_floor_texture, 0.015,
               "A floor between the junctions with more strong edges along no corridor line "
               "(horizontal, vertical, toward the vanishing point) than this fraction is not a "
@@ -139,6 +145,8 @@ Status RecoverDepthOptionsFromFlags(RecoverDepthOptions* options) {
   options->perception.hough_angle_window_deg = FLAGS_hough_angle_window;
   options->perception.relaxed_hough_threshold = FLAGS_relaxed_hough_threshold;
   options->min_confidence = FLAGS_min_confidence;
+  options->min_width = FLAGS_min_corridor_width;
+  options->max_width = FLAGS_max_corridor_width;
   std::unique_ptr<DepthRecoverer> probe;
   return DepthRecoverer::Create(*options, &probe);
 }

@@ -73,6 +73,8 @@ const std::vector<std::pair<std::string, FlagGroup>>& FlagTable() {
       {"loss", FlagGroup::kSolver},
       {"loss_scale", FlagGroup::kSolver},
       {"min_confidence", FlagGroup::kSolver},
+      {"min_corridor_width", FlagGroup::kSolver},
+      {"max_corridor_width", FlagGroup::kSolver},
       {"max_range", FlagGroup::kSolver},
       {"max_height", FlagGroup::kSolver},
       {"ceiling_height", FlagGroup::kSolver},

@@ -40,7 +40,10 @@ TEST(InnerLineGuardTest, AWindowBandDoesNotMoveTheCorrectWallOut) {
     RecoverDepthOptions options;
     EXPECT_LT(WidthError(f, options), 0.03) << index;
     options.inner_line.min_target_support = 0;
+    options.max_width = 20;  // The moved wall reported, not refused as wider than a corridor.
     EXPECT_GT(WidthError(f, options), 0.5) << index;
+    options.max_width = RecoverDepthOptions().max_width;
+    EXPECT_TRUE(std::isnan(WidthError(f, options))) << index;
   }
 }
 

@@ -132,8 +132,8 @@ TEST(BadGeometry, CheckPlausibleNamesWhatIsImplausible) {
   };
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const Case cases[] = {
-      {MakeGeometry(0, 0.1, 0, 0.49, 1.2), "width 0.49 m is outside [0.5, 20] m"},
-      {MakeGeometry(0, 0.1, 0, 20.5, 1.2), "width 20.5 m is outside [0.5, 20] m"},
+      {MakeGeometry(0, 0.1, 0, 0.49, 1.2), "width 0.49 m is narrower than min_corridor_width 0.5 m"},
+      {MakeGeometry(0, 0.1, 0, 5.5, 1.2), "width 5.5 m is wider than max_corridor_width 5 m"},
       {MakeGeometry(1.3, 0.1, 0, 2, 1.2), "yaw 1.3 rad"},
       {MakeGeometry(-1.55, 0.1, 0, 2, 1.2), "yaw -1.55 rad"},
       {MakeGeometry(0, 0.9, 0, 2, 1.2), "pitch 0.9 rad"},
@@ -147,11 +147,40 @@ TEST(BadGeometry, CheckPlausibleNamesWhatIsImplausible) {
     EXPECT_NE(status.message().find(c.message), std::string::npos) << status.ToString();
   }
   EXPECT_TRUE(CheckPlausible(MakeGeometry(0.1, 0.1, 0.2, 2.0, 1.2), defaults).ok());
+  EXPECT_TRUE(CheckPlausible(MakeGeometry(0, 0.1, 0, 4.9, 1.2), defaults).ok());
   RecoverDepthOptions narrow;
   narrow.min_width = 1.0;
-  narrow.max_width = 5.0;
-  EXPECT_EQ(CheckPlausible(MakeGeometry(0, 0.1, 0, 6.0, 1.2), narrow).code(),
+  narrow.max_width = 3.0;
+  EXPECT_EQ(CheckPlausible(MakeGeometry(0, 0.1, 0, 4.0, 1.2), narrow).code(),
             StatusCode::kImplausibleGeometry);
+  RecoverDepthOptions hall;
+  hall.max_width = 8.0;
+  EXPECT_TRUE(CheckPlausible(MakeGeometry(0, 0.1, 0, 6.0, 1.2), hall).ok());
+}
+
+// A 6 m wide corridor, its junctions exact: refused by default (wider than max_corridor_width),
+// recovered at 6 m when the bound is raised for a hall.
+TEST(BadGeometry, WiderThanACorridorIsRefusedUnlessTheBoundIsRaised) {
+  const CorridorGeometry truth = MakeGeometry(0.05, 0.08, 0.3, 6.0, 1.2);
+  const CorridorObservation obs = ExactObservation(truth, 20, 20, 60);
+  for (const double max_width : {RecoverDepthOptions().max_width, 8.0}) {
+    RecoverDepthOptions options;
+    options.max_width = max_width;
+    std::unique_ptr<DepthRecoverer> recoverer;
+    ASSERT_TRUE(DepthRecoverer::Create(options, &recoverer).ok());
+    RecoverDepthResult result;
+    result.junctions = PairFrom(obs);
+    const Status status = recoverer->Reconstruct(ObservationCamera(), &result);
+    if (max_width < 6.0) {
+      EXPECT_EQ(status.code(), StatusCode::kImplausibleGeometry) << status.ToString();
+      EXPECT_NE(status.message().find("wider than max_corridor_width"), std::string::npos)
+          << status.ToString();
+      EXPECT_TRUE(result.depth.empty());
+    } else {
+      ASSERT_TRUE(status.ok()) << status.ToString();
+      EXPECT_NEAR(result.geometry.width, 6.0, 0.06);
+    }
+  }
 }
 
 // A solver stopped at the edge of its range (here: the grid's widest corridor, 10 m, for a 30 m
