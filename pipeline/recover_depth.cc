@@ -160,7 +160,11 @@ Status DepthRecoverer::Detect(const cv::Mat& image, const Camera& camera,
 Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* result,
                                    const CorridorGeometry* previous) const {
   const Status status = ReconstructAsSeen(camera, result, previous);
-  if (status.ok() && level_ != nullptr) LevelRoll(*level_, camera, previous, result);
+  // A frame refused for its confidence is tried level too: a roll the model lacks may be what
+  // weakens its evidence.
+  if ((status.ok() || status.code() == StatusCode::kLowConfidence) && level_ != nullptr) {
+    LevelRoll(*level_, camera, previous, result);
+  }
   return result->status;
 }
 

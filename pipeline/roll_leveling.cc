@@ -29,6 +29,8 @@ void LevelRoll(const DepthRecoverer& level, const Camera& camera,
   RecoverDepthResult turned;
   level.Detect(level_bgr, camera, &turned, nullptr);
   if (turned.ReadyToReconstruct()) level.Reconstruct(camera, &turned, previous);
+  // A frame refused as seen keeps its refusal unless the level frame is recovered.
+  if (!result->status.ok() && !turned.status.ok()) return;
   if (!turned.status.ok()) {
     result->AddNote(note.str() + " found, but the level frame gave no depth (" +
                     turned.status.message() + "): recovered as seen");

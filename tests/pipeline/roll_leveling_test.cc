@@ -1,7 +1,8 @@
 // level_roll end to end on rolled frames of the generator's head-mounted class: the roll the
 // frame was recovered level from against the pose's, and the depth, turned back to the frame's
 // pixels, against the ray-cast truth, with and without levelling; and a level frame that is less
-// sure of its layout than the frame as seen, left untaken.
+// sure of its layout than the frame as seen, left untaken; a frame refused as seen, recovered
+// level.
 #include <cmath>
 #include <cstdio>
 #include <vector>
@@ -11,6 +12,7 @@
 #include "corridor_depth/recover_depth.h"
 #include "synth/corridor_renderer.h"
 #include "synth/real_buildings.h"
+#include "tests/support/preset_frame.h"
 
 namespace corridor {
 namespace {
@@ -85,6 +87,27 @@ TEST(RollLevelingTest, ALevelFrameLessSureThanTheFrameAsSeenIsNotTaken) {
   EXPECT_LT(std::abs(result.geometry.width - width) / width, 0.03);
   EXPECT_EQ(result.roll, 0);
   EXPECT_NE(result.fallback.find("recovered as seen"), std::string::npos) << result.fallback;
+}
+
+TEST(RollLevelingTest, AFrameRefusedAsSeenIsRecoveredLevel) {
+  // The mix class's scene 3 (head-mounted), frame 16: as seen, refused for its confidence; turned
+  // level, recovered within 3% of the true width.
+  const testing_util::PresetFrame f = testing_util::RenderPreset("mix", 3, 16);
+  ASSERT_FALSE(f.frame.bgr.empty());
+  RecoverDepthOptions options;
+  options.level_roll = false;
+  RecoverDepthResult seen;
+  EXPECT_EQ(RecoverDepth(f.frame.bgr, f.camera, options, &seen).code(), StatusCode::kLowConfidence)
+      << seen.status.ToString();
+  options.level_roll = true;
+  RecoverDepthResult turned;
+  ASSERT_TRUE(RecoverDepth(f.frame.bgr, f.camera, options, &turned).ok())
+      << turned.status.ToString();
+  EXPECT_LT(std::abs(turned.geometry.width - f.true_width) / f.true_width, 0.03);
+  EXPECT_NE(turned.roll, 0);
+  EXPECT_GE(turned.confidence, options.min_confidence);
+  EXPECT_NE(turned.fallback.find("recovered level"), std::string::npos) << turned.fallback;
+  EXPECT_FALSE(turned.depth.empty());
 }
 
 }  // namespace
