@@ -100,7 +100,7 @@ DEFINE_int32(floor_band_min_across, 20,
              "A chosen junction with a line above it, where the floor between them shows at least "
              "this many edge pixels across the corridor (tile joints) and few vertical ones, is a "
              "runner's or stripe's edge: the line above is the junction; 0 = off");
-DEFINE_double(floor_band_texture_density, 0.05,
+DEFINE_double(floor_band_texture_density, 0.02,
               "Also floor for that rule: a band with at least this many edge pixels per pixel, "
               "three times as many oblique ones as vertical or across ones (a carpet's texture "
               "beside a runner); 0 = off");
