@@ -14,20 +14,16 @@
 namespace corridor {
 namespace {
 
-double WidthError(const testing_util::PresetFrame& f, const RecoverDepthOptions& options) {
-  RecoverDepthResult result;
-  if (!RecoverDepth(f.frame.bgr, f.camera, options, &result).ok()) return std::nan("");
-  return std::abs(result.geometry.width - f.true_width) / f.true_width;
-}
+using testing_util::RecoveredWidthError;
 
 TEST(FaintCarpetTest, TheJunctionsBeyondARunnerOnFaintCarpetAreTaken) {
   for (const int index : {0, 3}) {
     const testing_util::PresetFrame f = testing_util::RenderPreset("mix", 7, index);
     ASSERT_FALSE(f.frame.bgr.empty());
     RecoverDepthOptions options;
-    EXPECT_LT(WidthError(f, options), 0.03) << index;
+    EXPECT_LT(RecoveredWidthError(f, options), 0.03) << index;
     options.perception.floor_band_texture_density = 0.05;
-    EXPECT_GT(WidthError(f, options), 0.3) << index;
+    EXPECT_GT(RecoveredWidthError(f, options), 0.3) << index;
   }
 }
 

@@ -22,12 +22,7 @@ PresetFrame Render(const std::string& class_name, int scene, int index) {
   return testing_util::RenderPreset(class_name, scene, index);
 }
 
-// Relative width error of the recovered frame; NaN when it is not ok.
-double WidthError(const PresetFrame& f, const RecoverDepthOptions& options) {
-  RecoverDepthResult result;
-  if (!RecoverDepth(f.frame.bgr, f.camera, options, &result).ok()) return std::nan("");
-  return std::abs(result.geometry.width - f.true_width) / f.true_width;
-}
+using testing_util::RecoveredWidthError;
 
 // A window band on one wall: its top is read as that side's ceiling junction, far too high, so the
 // two ceiling sides disagree and the check would move the other, correct, wall out several times
@@ -38,12 +33,12 @@ TEST(InnerLineGuardTest, AWindowBandDoesNotMoveTheCorrectWallOut) {
     const PresetFrame f = Render("windows", 2, index);
     ASSERT_FALSE(f.frame.bgr.empty());
     RecoverDepthOptions options;
-    EXPECT_LT(WidthError(f, options), 0.03) << index;
+    EXPECT_LT(RecoveredWidthError(f, options), 0.03) << index;
     options.inner_line.min_target_support = 0;
     options.max_width = 20;  // The moved wall reported, not refused as wider than a corridor.
-    EXPECT_GT(WidthError(f, options), 0.5) << index;
+    EXPECT_GT(RecoveredWidthError(f, options), 0.5) << index;
     options.max_width = RecoverDepthOptions().max_width;
-    EXPECT_TRUE(std::isnan(WidthError(f, options))) << index;
+    EXPECT_TRUE(std::isnan(RecoveredWidthError(f, options))) << index;
   }
 }
 
@@ -56,13 +51,13 @@ TEST(InnerLineGuardTest, AHighCameraDoesNotMoveAWallInFurtherThanABaseboardExpla
   ASSERT_FALSE(f.frame.bgr.empty());
   RecoverDepthOptions options;
   options.level_roll = false;
-  EXPECT_LT(WidthError(f, options), 0.03);
+  EXPECT_LT(RecoveredWidthError(f, options), 0.03);
   options.inner_line.min_target_support = 0;
-  EXPECT_LT(WidthError(f, options), 0.03);
+  EXPECT_LT(RecoveredWidthError(f, options), 0.03);
   options.inner_line.max_baseboard_height = 0;
-  EXPECT_GT(WidthError(f, options), 0.08);
+  EXPECT_GT(RecoveredWidthError(f, options), 0.08);
   options.inner_line.min_target_support = InnerLineCheckOptions().min_target_support;
-  EXPECT_LT(WidthError(f, options), 0.03);
+  EXPECT_LT(RecoveredWidthError(f, options), 0.03);
 }
 
 TEST(InnerLineGuardTest, BadOptionsAreRejected) {

@@ -4,11 +4,13 @@
 // scene's true width: for tests that need a class's frame (a handrail, a bench, a head-mounted
 // camera) with exact truth.
 
+#include <cmath>
 #include <cstddef>
 #include <string>
 #include <vector>
 
 #include "corridor_depth/camera.h"
+#include "corridor_depth/recover_depth.h"
 #include "synth/corridor_renderer.h"
 #include "synth/real_buildings.h"
 
@@ -38,6 +40,13 @@ inline PresetFrame RenderPreset(const std::string& class_name, int scene, int in
     out.frame.bgr.release();
   }
   return out;
+}
+
+// The relative width error of `f` recovered with `options`; NaN when the frame is not ok.
+inline double RecoveredWidthError(const PresetFrame& f, const RecoverDepthOptions& options) {
+  RecoverDepthResult result;
+  if (!RecoverDepth(f.frame.bgr, f.camera, options, &result).ok()) return std::nan("");
+  return std::abs(result.geometry.width - f.true_width) / f.true_width;
 }
 
 }  // namespace testing_util
