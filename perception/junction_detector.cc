@@ -15,6 +15,7 @@
 #include "perception/junction_candidates.h"
 #include "perception/junction_refit.h"
 #include "perception/junction_search_region.h"
+#include "perception/line_ridge.h"
 #include "perception/junction_selector.h"
 #include "perception/junction_support.h"
 #include "perception/line_segments.h"
@@ -71,6 +72,8 @@ bool JunctionDetectorOptions::Check(std::string* why) const {
     reason = "stripe_floor_likeness must be in [0, 1] (0 = off)";
   } else if (!(inside_floor_likeness >= 0 && inside_floor_likeness <= 1)) {
     reason = "inside_floor_likeness must be in [0, 1] (0 = off)";
+  } else if (!(inside_floor_ridge_likeness >= 0 && inside_floor_ridge_likeness <= 1)) {
+    reason = "inside_floor_ridge_likeness must be in [0, 1] (0 = off)";
   } else if (!(support_distance_px > 0)) {
     reason = "support_distance_px must be positive";
   } else if (!(baseboard_band_contrast >= 0 && baseboard_band_contrast <= 1e6)) {
@@ -262,7 +265,8 @@ void SearchPair(const cv::Mat& color, const JunctionSearchRegion& region,
   cues.floor_band.min_across = options.floor_band_min_across;
   cues.floor_band.min_texture_density = options.floor_band_texture_density;
   const bool floor_colour_rules =
-      options.stripe_floor_likeness > 0 || options.inside_floor_likeness > 0;
+      options.stripe_floor_likeness > 0 || options.inside_floor_likeness > 0 ||
+      options.inside_floor_ridge_likeness > 0;
   // What the band measure reads, referred to by one pointer (a capture std::function keeps
   // without allocating).
   struct BandMeasure {
@@ -294,6 +298,11 @@ void SearchPair(const cv::Mat& color, const JunctionSearchRegion& region,
     cues.floor_band.floor_above = [&cues](const FloorAppearance& floor, const MergedLine& line) {
       return FloorLikenessAbove(cues.roi, floor, line, cues.roi_top, cues.scale);
     };
+    cues.floor_band.ridge = [&cues](const MergedLine& line) {
+      return RidgeFraction(cues.roi, line, cues.roi_top, cues.scale);
+    };
+    cues.floor_band.ridge_min_likeness = options.inside_floor_ridge_likeness;
+    cues.floor_band.ridge_width_px = 4.0 * region.scale;
   }
   const Eigen::Vector2d size(width, height);
   FirstLook(found.segments, options, prior, cues, size, band, chosen);

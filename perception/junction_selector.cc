@@ -374,9 +374,33 @@ void ApplyStripeRulesBeyondFloorBands(const Eigen::Vector2d& vp, const FloorBand
 void ApplyInsideFloorRule(const Eigen::Vector2d& vp, const FloorBandTest& test,
                           const std::vector<JunctionCandidate>& side, double above_chosen,
                           int* chosen, int* inner_index, int* lower) {
-  if (above_chosen < test.inside_min_likeness) return;
+  const bool alike = above_chosen >= test.inside_min_likeness;
+  if (!alike && !(test.ridge && test.ridge_min_likeness > 0 &&
+                  above_chosen >= test.ridge_min_likeness)) {
+    return;
+  }
   const std::vector<std::pair<long, int>>& above = LinesAboveNearestFirst(vp, test, side, *chosen);
-  if (!above.empty()) TakeLineAbove(above.front().second, chosen, inner_index, lower);
+  if (alike) {
+    if (!above.empty()) TakeLineAbove(above.front().second, chosen, inner_index, lower);
+    return;
+  }
+  // A joint in the floor whose far side is a little less alike (a reflection on it): the line is
+  // a ridge, the next line beyond the joint's own width bounds the floor, and the band up to it
+  // has no more of a wall's vertical edges than of a floor's joints across.
+  const MergedLine& line = side[*chosen].line;
+  if (test.ridge(line) < test.min_ridge_fraction) return;
+  const Eigen::Vector2d low = LowEnd(line);
+  int next = -1;
+  for (const std::pair<long, int>& entry : above) {
+    if (std::abs(side[entry.second].line.line.dot(low.homogeneous())) > test.ridge_width_px) {
+      next = entry.second;
+      break;
+    }
+  }
+  if (next < 0) return;
+  const BandEdges band = test.measure(line, side[next].line, vp);
+  if (band.vertical > test.ridge_max_vertical_ratio * band.across) return;
+  TakeLineAbove(next, chosen, inner_index, lower);
 }
 
 // The floor-colour rules on one side, the stripe rule first: the floor below the chosen line and

@@ -94,6 +94,19 @@ struct FloorBandTest {
   // The inside-floor rule: a chosen line with at least this much floor above it lies inside the
   // floor, and the nearest line above it becomes the chosen line; 0: no inside-floor rule.
   double inside_min_likeness = 0;
+  // ... or at least `ridge_min_likeness` (0: no such relaxation) when the chosen line is a thin
+  // ridge, a joint darker or lighter than the floor on both its sides, along at least
+  // `min_ridge_fraction` of it (`ridge`: RidgeFraction; empty: no relaxation). A reflection on a
+  // satin floor makes the strip beyond a joint near the wall a little less alike. Then the line
+  // taken is the nearest one above farther than `ridge_width_px` (nearer ones are the joint's own
+  // other edge), and the band up to it must have at most `ridge_max_vertical_ratio` vertical edge
+  // pixels per across one (a wall's door frames and corners stand vertical; a reflecting floor
+  // mirrors a few of them, between its joints).
+  std::function<double(const MergedLine& line)> ridge;
+  double ridge_min_likeness = 0;
+  double min_ridge_fraction = 0.5;
+  double ridge_width_px = 4;
+  double ridge_max_vertical_ratio = 2;
 };
 
 // Scores every (left, right) pair: both lines' support lengths and boundary scores, plus the
@@ -114,7 +127,8 @@ struct FloorBandTest {
 // After both, the stripe rule (`floor_band.floor_above`): when the floor goes on above a line
 // beyond the chosen one, the next line above that one becomes the chosen line. Last, the
 // inside-floor rule (`floor_band.inside_min_likeness`): a chosen line with floor colour above it
-// as well as below gives way to the nearest line above it.
+// as well as below gives way to the nearest line above it (or, a little less alike above, a
+// joint's ridge: `floor_band.ridge`).
 SelectedPair SelectJunctionPair(std::vector<JunctionCandidate>* left,
                                 std::vector<JunctionCandidate>* right,
                                 const std::vector<MergedLine>& all_lines,

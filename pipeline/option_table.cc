@@ -28,6 +28,7 @@ void VisitRecoverDepthOptions(RecoverDepthOptions* o, OptionVisitor* v) {
   v->Double("floor_band_texture_density", &o->perception.floor_band_texture_density);
   v->Double("stripe_floor_likeness", &o->perception.stripe_floor_likeness);
   v->Double("inside_floor_likeness", &o->perception.inside_floor_likeness);
+  v->Double("inside_floor_ridge_likeness", &o->perception.inside_floor_ridge_likeness);
   v->Double("hough_angle_window", &o->perception.hough_angle_window_deg);
   v->Int("relaxed_hough_threshold", &o->perception.relaxed_hough_threshold);
   v->Double("min_confidence", &o->min_confidence);

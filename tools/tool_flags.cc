@@ -112,6 +112,10 @@ DEFINE_double(inside_floor_likeness, 0.95,
               "A chosen junction with the floor's colour on both sides (the strip above it at "
               "least this alike to the floor below it, in [0, 1]) lies inside the floor: the "
               "nearest line above is the junction; 0 = off");
+DEFINE_double(inside_floor_ridge_likeness, 0.9,
+              "... or at least this alike when the chosen junction is a thin ridge (a joint "
+              "darker or lighter than the floor on both sides), as a joint on a reflecting floor "
+              "is; 0 = off");
 
 namespace corridor {
 
@@ -141,6 +145,7 @@ Status RecoverDepthOptionsFromFlags(RecoverDepthOptions* options) {
   options->perception.floor_band_min_across = FLAGS_floor_band_min_across;
   options->perception.stripe_floor_likeness = FLAGS_stripe_floor_likeness;
   options->perception.inside_floor_likeness = FLAGS_inside_floor_likeness;
+  options->perception.inside_floor_ridge_likeness = FLAGS_inside_floor_ridge_likeness;
   options->perception.floor_band_texture_density = FLAGS_floor_band_texture_density;
   options->perception.hough_angle_window_deg = FLAGS_hough_angle_window;
   options->perception.relaxed_hough_threshold = FLAGS_relaxed_hough_threshold;

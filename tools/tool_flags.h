@@ -38,6 +38,7 @@ DECLARE_double(max_floor_texture);
 DECLARE_int32(floor_band_min_across);
 DECLARE_double(stripe_floor_likeness);
 DECLARE_double(inside_floor_likeness);
+DECLARE_double(inside_floor_ridge_likeness);
 DECLARE_double(floor_band_texture_density);
 DECLARE_double(hough_angle_window);
 DECLARE_int32(relaxed_hough_threshold);
