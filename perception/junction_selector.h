@@ -104,7 +104,7 @@ struct FloorBandTest {
   // mirrors a few of them, between its joints).
   std::function<double(const MergedLine& line)> ridge;
   double ridge_min_likeness = 0;
-  double min_ridge_fraction = 0.5;
+  double min_ridge_fraction = 0.4;
   double ridge_width_px = 4;
   double ridge_max_vertical_ratio = 2;
 };

@@ -23,11 +23,15 @@ struct PresetFrame {
   double true_width = 0;
 };
 
-// Frame `index` of scene `scene` of the class `class_name` ("rail", "furniture", "head", ...).
-inline PresetFrame RenderPreset(const std::string& class_name, int scene, int index) {
+// Frame `index` of scene `scene` of the class `class_name` ("rail", "furniture", "head", ...),
+// rendered `width_px` x `height_px` (the preset's 80-degree view).
+inline PresetFrame RenderPreset(const std::string& class_name, int scene, int index,
+                                int width_px = 640, int height_px = 480) {
   synth::RealBuildingsOptions options;
   options.scenes = scene + 1;
   options.frames = index + 1;
+  options.width_px = width_px;
+  options.height_px = height_px;
   std::vector<synth::ScenePreset> presets;
   PresetFrame out;
   if (!synth::RealBuildingsPreset(class_name, options, &presets).ok()) return out;
