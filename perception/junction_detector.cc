@@ -264,9 +264,9 @@ void SearchPair(const cv::Mat& color, const JunctionSearchRegion& region,
   const BaseboardBandTest band = MakeBandTest(options, cues);
   cues.floor_band.min_across = options.floor_band_min_across;
   cues.floor_band.min_texture_density = options.floor_band_texture_density;
+  // The ridge's relaxation is part of the inside-floor rule: it never runs without it.
   const bool floor_colour_rules =
-      options.stripe_floor_likeness > 0 || options.inside_floor_likeness > 0 ||
-      options.inside_floor_ridge_likeness > 0;
+      options.stripe_floor_likeness > 0 || options.inside_floor_likeness > 0;
   // What the band measure reads, referred to by one pointer (a capture std::function keeps
   // without allocating).
   struct BandMeasure {
