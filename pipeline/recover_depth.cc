@@ -296,13 +296,15 @@ Status DepthRecoverer::ReconstructAsSeen(const Camera& camera, RecoverDepthResul
   }
   if (search_ceiling) {
     // Whether the frame is in doubt only when a hold is considered: its confidence costs a look.
+    // Its ceiling's sides disagreeing are what the hold is about, not a doubt of the frame (they
+    // weigh in its confidence).
     bool ceiling_doubted = true;
     if (CeilingHoldConsidered(previous, options_.max_ceiling_disagreement,
                               options_.ceiling.min_support, geometry, result)) {
       const double disagreement = CeilingDisagreement(result->ceiling, geometry.camera_height);
       own_confidence_low(disagreement);
-      ceiling_doubted = FrameInDoubt(own_confidence, options_.min_confidence, disagreement,
-                                     std::log(kCeilingSidesAgree), result->junctions_tracked);
+      ceiling_doubted = FrameInDoubt(own_confidence, options_.min_confidence, -1, 0,
+                                     result->junctions_tracked);
     }
     HoldCeiling(previous, options_.max_ceiling_disagreement, options_.ceiling.min_support,
                 ceiling_doubted, &geometry, result);

@@ -119,34 +119,20 @@ void HoldCeiling(const CorridorGeometry* previous, double max_disagreement, doub
   std::ostringstream how;
   how.precision(2);
   how << std::fixed;
-  // A side strong enough to count (min_support) whose height agrees with the trusted one (within
-  // max_disagreement) confirms it with this frame's own evidence: that wall is where the recent
-  // frames had it, and the frame's ceiling, off from it, came with the other wall.
-  bool side_confirms = false;
-  const double h = g->camera_height, above_trusted = held.ceiling_height - h;
-  for (int side = 0; side < 2; ++side) {
-    const double above = result->ceiling.side_height[side] - h;
-    side_confirms |= result->ceiling.side_support[side] >= min_support && above > 0.1 &&
-                     above_trusted > 0.1 &&
-                     std::abs(std::log(above / above_trusted)) <= max_disagreement;
-  }
-  // Only a frame narrower than the recent frames: one wider whose ceiling is higher has both
-  // measured against walls put too far (a line on the wall, as a baseboard's top is, taken for a
-  // junction), and the trusted height is the better one.
-  const bool narrower = held.width > 0 && g->width < held.width;
-  if (found && disagreement < 0 && !frame_doubted && !side_confirms && narrower) {
-    how << "ceiling sides too weak to compare: the frame's own " << g->ceiling_height
-        << " m kept (its own evidence is strong, and no side of it confirms the previous frame's "
-        << held.ceiling_height << " m)";
-    result->ceiling_kept = true;
-    result->AddNote(how.str());
-    return;
-  }
   if (found && disagreement >= 0) {
     how << "ceiling sides at " << result->ceiling.side_height[0] << " and "
         << result->ceiling.side_height[1] << " m disagree";
   } else {
     how << (found ? "ceiling sides too weak to compare" : "no ceiling found");
+  }
+  // A frame not in doubt keeps what its own evidence gives, its ceiling or none: a hold that
+  // replaced it could only be right where the recent frames are, and they may be the ones wrong.
+  if (!frame_doubted) {
+    how << ": the previous frame's " << held.ceiling_height << " m not held (the frame's own "
+        << "evidence is strong)";
+    result->ceiling_kept = true;
+    result->AddNote(how.str());
+    return;
   }
   how << ": the previous frame's " << held.ceiling_height << " m held";
   g->ceiling_height = held.ceiling_height;
@@ -178,11 +164,9 @@ void ScaleWallsToCeiling(const CorridorGeometry& previous, double max_change, bo
   std::ostringstream how;
   how.precision(2);
   how << std::fixed;
-  const double strongest =
-      std::max(result->junctions.left.confidence, result->junctions.right.confidence);
-  if (!frame_doubted && strongest >= kStrongJunction) {
+  if (!frame_doubted) {
     how << "walls not scaled " << factor << "x to the previous frame's ceiling: the frame's own "
-        << "evidence is strong and a junction line, " << strongest << ", too";
+        << "evidence is strong";
     result->AddNote(how.str());
     return;
   }

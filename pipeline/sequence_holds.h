@@ -69,20 +69,13 @@ bool MuchNarrower(const CorridorGeometry& previous, double max_change, const Cor
 void HoldWidth(const CorridorGeometry& previous, double max_change, bool frame_doubted,
                CorridorGeometry* g, RecoverDepthResult* result);
 
-// The ceiling is as constant as the width: a frame whose ceiling is not trusted (not found, its
-// two sides too weak to compare, or disagreeing because a wall distance is wrong and so its
-// side's height) takes the previous trusted height (result->ceiling_held). Sets
-// result->ceiling_trusted in every case. `previous` (may be null) carries a ceiling only when one
-// was trusted (SequencePrior).
-// A ceiling the frame found whose two sides were merely too weak to compare is no evidence against
-// it: a frame not in doubt (`frame_doubted`, as for HoldWidth) and narrower than the recent
-// frames (`previous->width`) keeps it, with a note, unless one of its sides strong enough to
-// count (min_support) agrees with the trusted height (within max_disagreement): that side's wall
-// is where the recent frames had it, and confirms their height. A wider frame's walls and ceiling
-// are both too far when a line on the wall (a baseboard's top) was taken for a junction: held.
-// A ceiling's height is measured from its junctions with the walls: the trusted height came
-// with the recent frames' walls, and a frame that measured its own ceiling with other walls would
-// otherwise get a ceiling no line of its image shows.
+// The ceiling is as constant as the width: a frame in doubt (`frame_doubted`: its own confidence
+// below min_confidence, or tracked junctions) whose ceiling is not trusted (not found, its two
+// sides too weak to compare, or disagreeing because a wall distance is wrong and so its side's
+// height) takes the previous trusted height (result->ceiling_held). A frame not in doubt keeps its
+// own ceiling, or none, with a note (result->ceiling_kept): the trusted height came with the
+// recent frames' walls, which may be the ones wrong. Sets result->ceiling_trusted in every case.
+// `previous` (may be null) carries a ceiling only when one was trusted (SequencePrior).
 void HoldCeiling(const CorridorGeometry* previous, double max_disagreement, double min_support,
                  bool frame_doubted, CorridorGeometry* g, RecoverDepthResult* result);
 
@@ -100,9 +93,9 @@ bool CeilingHoldConsidered(const CorridorGeometry* previous, double max_disagree
 // change along it, and a corridor that narrows keeps its ceiling: both walls are scaled out to the
 // trusted ceiling (result->walls_scaled). Only out: lines inside the floor put walls too near,
 // never too far, so a frame wider and higher than the trusted ceiling is this frame right and the
-// trusted ceiling (from frames whose junctions were wrong alike) wrong. A frame that is not
-// doubted (`frame_doubted`, as for HoldWidth) with a strong junction line (kStrongJunction) is
-// left alone, with a note.
+// trusted ceiling (from frames whose junctions were wrong alike) wrong. Only a frame in doubt
+// (`frame_doubted`, as for HoldWidth) is scaled: one whose own evidence is strong is left alone,
+// with a note (the recent frames may be the ones wrong alike).
 // The factor ScaleWallsToCeiling would scale both walls by (above 1 + max_change); 0 when it
 // would not.
 double WallScaleFactor(const CorridorGeometry& previous, double max_change,

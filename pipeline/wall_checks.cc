@@ -9,6 +9,7 @@
 #include "perception/lower_edge.h"
 #include "pipeline/ceiling_agreement.h"
 #include "pipeline/ceiling_split.h"
+#include "pipeline/frame_confidence.h"
 #include "pipeline/inner_line_check.h"
 #include "pipeline/plausibility.h"
 #include "pipeline/solver_evidence.h"
@@ -156,6 +157,25 @@ bool TakeFootOfSplitWall(const WallCheckInputs& in, CorridorGeometry* geometry,
   return true;
 }
 
+namespace {
+
+// Whether the frame with its wall moved is confident on its own evidence (its confidence, as the
+// frame would report it, at least min_confidence): the previous frames' width may then not veto
+// the move. A sequence overrules only a frame whose own evidence is weak.
+bool MovedWallConfident(const WallCheckInputs& in, const CorridorGeometry& moved,
+                        const CeilingEstimate& ceiling, int moved_side,
+                        const JunctionPair& junctions) {
+  const RecoverDepthOptions& options = in.options;
+  const double split = CeilingSplit(in.search.bgr, in.search.camera, moved, ceiling,
+                                    options.ceiling, options.ceiling_split, in.edges);
+  const FrameEvidence evidence = GatherFrameEvidence(
+      junctions, in.search, moved, CeilingDisagreement(ceiling, moved.camera_height),
+      /*corrected=*/false, moved_side, options.vertical_crossings, split);
+  return FrameConfidence(evidence) >= options.min_confidence;
+}
+
+}  // namespace
+
 Status MoveInnerWall(const WallCheckInputs& in, const CorridorGeometry* previous,
                      CorridorGeometry* geometry, RecoverDepthResult* result) {
   const RecoverDepthOptions& options = in.options;
@@ -179,7 +199,8 @@ Status MoveInnerWall(const WallCheckInputs& in, const CorridorGeometry* previous
   if (!status.ok()) return status;
   // In a sequence the previous frame's width must agree better with the moved wall than with the
   // line it replaces (a misjudged side would otherwise carry on through the width hold), unless
-  // the moved walls' two ceiling sides, each searched alone, agree with each other and with the
+  // the frame with the wall moved is confident on its own (MovedWallConfident), or the moved
+  // walls' two ceiling sides, each searched alone, agree with each other and with the
   // trusted ceiling (within max_ceiling_change): the frame's own evidence confirms both walls, and
   // the recent width (from frames whose sides disagreed) is the wrong one. Sides agreeing on
   // another height are both walls wrong alike (ScaleWallsToCeiling), no confirmation.
@@ -193,7 +214,8 @@ Status MoveInnerWall(const WallCheckInputs& in, const CorridorGeometry* previous
   }
   if (previous != nullptr && previous->width > 0 && !confirmed &&
       std::abs(std::log(moved.width / previous->width)) >=
-          std::abs(std::log(geometry->width / previous->width))) {
+          std::abs(std::log(geometry->width / previous->width)) &&
+      !MovedWallConfident(in, moved, ceiling, check.side, result->junctions)) {
     return Status::Ok();
   }
   result->ceiling = ceiling;

@@ -1,7 +1,7 @@
 // Holding the ceiling height in a sequence (RecoverDepthOptions::max_ceiling_disagreement): a frame
-// whose own ceiling is trusted keeps it; a frame whose ceiling junctions are painted out takes the
-// previous frame's height; SequencePrior passes on only trusted (or held) heights. Ground truth is
-// the generator's.
+// whose own ceiling is trusted keeps it; a confident frame whose ceiling junctions are painted out
+// does not take the previous frame's height; SequencePrior passes on only trusted (or held)
+// heights. Ground truth is the generator's.
 #include <cmath>
 #include <limits>
 
@@ -63,24 +63,30 @@ TEST(CeilingHoldTest, ATrustedCeilingIsKeptWhateverThePreviousFrameSaid) {
   EXPECT_NEAR(r.geometry.ceiling_height, truth, 0.03 * truth);
 }
 
-TEST(CeilingHoldTest, AFrameWithoutItsCeilingTakesThePreviousHeight) {
+// A frame whose ceiling is painted out is confident on its walls: the sequence does not give it
+// the previous frame's ceiling (only a frame in doubt takes it, by hand in own_evidence_test.cc);
+// it keeps none, and says so.
+TEST(CeilingHoldTest, AConfidentFrameWithoutItsCeilingKeepsNone) {
   const PaperFrame p = MakeFrame();
   const cv::Mat painted = WithoutCeiling(p);
   const RecoverDepthResult alone = RecoverWith(painted, p.camera, RecoverDepthOptions(), nullptr);
   ASSERT_FALSE(alone.ceiling_trusted) << "premise: the painted frame's ceiling is not trusted";
+  ASSERT_GE(alone.confidence, RecoverDepthOptions().min_confidence) << "premise: not in doubt";
   EXPECT_FALSE(alone.ceiling_held);
 
   const CorridorGeometry previous = p.frame.truth;  // The generator's height, 2.7 m.
-  const RecoverDepthResult held = RecoverWith(painted, p.camera, RecoverDepthOptions(), &previous);
-  EXPECT_TRUE(held.ceiling_held);
-  EXPECT_EQ(held.geometry.ceiling_height, previous.ceiling_height);
-  EXPECT_NE(held.fallback.find("previous frame's 2.70 m held"), std::string::npos)
-      << held.fallback;
+  const RecoverDepthResult kept = RecoverWith(painted, p.camera, RecoverDepthOptions(), &previous);
+  EXPECT_FALSE(kept.ceiling_held);
+  EXPECT_TRUE(kept.ceiling_kept);
+  EXPECT_EQ(kept.geometry.ceiling_height, alone.geometry.ceiling_height);
+  EXPECT_NE(kept.fallback.find("previous frame's 2.70 m not held"), std::string::npos)
+      << kept.fallback;
 
   RecoverDepthOptions off;
   off.max_ceiling_disagreement = 0;
   const RecoverDepthResult not_held = RecoverWith(painted, p.camera, off, &previous);
   EXPECT_FALSE(not_held.ceiling_held);
+  EXPECT_FALSE(not_held.ceiling_kept);
   EXPECT_EQ(not_held.geometry.ceiling_height, alone.geometry.ceiling_height);
 }
 

@@ -1,10 +1,12 @@
 // Scaling both walls to the trusted ceiling in a sequence (RecoverDepthOptions::max_ceiling_change):
 // when this frame's ceiling, its two sides agreeing, and its width are both off the previous
-// frame's by the same factor, both walls are taken to be wrong by it. A rendered corridor, seen
-// right, against a previous geometry 1.4 times as large (the mirror of a frame whose walls were
-// both put 1.4 times too near): its walls are scaled out by the factor of the heights above the
-// camera, computed here by hand. A narrower corridor under the same ceiling, a higher ceiling
-// over the same width, or walls and ceiling both farther than the trusted ones, are left alone.
+// frame's by the same factor, both walls may be wrong by it; only a frame in doubt is scaled, a
+// frame whose own evidence is strong keeps its walls (the recent frames may be the ones wrong
+// alike). A rendered corridor, seen right and confident, against a previous geometry 1.4 times as
+// large keeps its own walls, alone and in a stream; the scaling itself (by the factor of the
+// heights above the camera, computed here by hand) is checked on a doubted frame by hand. A
+// narrower corridor under the same ceiling, a higher ceiling over the same width, or walls and
+// ceiling both farther than the trusted ones, are left alone.
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -42,32 +44,28 @@ RecoverDepthResult RecoverAfter(const Seen& s, const CorridorGeometry* previous,
   return result;
 }
 
-TEST(CeilingScaleTest, BothWallsFollowATrustedCeilingWhenTheWidthAgrees) {
+TEST(CeilingScaleTest, AConfidentFrameKeepsItsWallsAgainstATrustedCeiling) {
   const Seen s = PlainCorridor();
   ASSERT_FALSE(s.frame.bgr.empty());
   const CorridorGeometry& truth = s.frame.truth;
   const double h = truth.camera_height, factor = 1.4;
-  // Alone the frame is right, its two ceiling sides agreeing: the premise.
+  // Alone the frame is right and confident, its two ceiling sides agreeing: the premise.
   const RecoverDepthResult alone = RecoverAfter(s, nullptr);
   ASSERT_NEAR(alone.geometry.width, truth.width, 0.02 * truth.width);
   ASSERT_TRUE(alone.ceiling_trusted);
+  ASSERT_GE(alone.confidence, RecoverDepthOptions().min_confidence);
   CorridorGeometry larger = alone.geometry;
   larger.SetWallDistances(factor * alone.geometry.LeftDistance(),
                           factor * alone.geometry.RightDistance());
   larger.ceiling_height = h + factor * (alone.geometry.ceiling_height - h);
+  // The premise of the scaling holds: ceiling and width both off by the factor.
+  ASSERT_NEAR(WallScaleFactor(larger, 0.25, alone.geometry, alone), factor, 0.03 * factor);
 
-  const RecoverDepthResult scaled = RecoverAfter(s, &larger);
-  EXPECT_NE(scaled.fallback.find("both walls scaled"), std::string::npos) << scaled.fallback;
-  EXPECT_NEAR(scaled.geometry.width, larger.width, 0.01 * larger.width);
-  EXPECT_NEAR(scaled.geometry.LeftDistance(), larger.LeftDistance(), 0.01 * larger.width);
-  EXPECT_DOUBLE_EQ(scaled.geometry.ceiling_height, larger.ceiling_height);
-  EXPECT_FALSE(scaled.width_held);
-
-  RecoverDepthOptions off;
-  off.max_ceiling_change = 0;
-  const RecoverDepthResult not_scaled = RecoverAfter(s, &larger, off);
-  EXPECT_EQ(not_scaled.fallback.find("both walls scaled"), std::string::npos);
-  EXPECT_NEAR(not_scaled.geometry.width, truth.width, 0.02 * truth.width);
+  const RecoverDepthResult kept = RecoverAfter(s, &larger);
+  EXPECT_NE(kept.fallback.find("walls not scaled"), std::string::npos) << kept.fallback;
+  EXPECT_FALSE(kept.walls_scaled);
+  EXPECT_NEAR(kept.geometry.width, truth.width, 0.02 * truth.width);
+  EXPECT_NEAR(kept.geometry.LeftDistance(), truth.LeftDistance(), 0.02 * truth.width);
 }
 
 TEST(CeilingScaleTest, ANarrowerCorridorOrAHigherCeilingAloneIsLeftAlone) {
@@ -92,11 +90,9 @@ TEST(CeilingScaleTest, ANarrowerCorridorOrAHigherCeilingAloneIsLeftAlone) {
 
 // A stream whose first frame is a corridor 1.4 times as large (wider, its ceiling 1.4 times as high
 // above the camera), then five frames of the plain one: each looks like both walls put 1.4 times
-// too near, and is scaled, but not for long: once three frames' own ceiling heights (the large
-// one's and two plain ones') have a median far from the trusted height, they outvote it
-// (SequencePrior), and the third plain frame is taken as it is; without them, a held width's limit
-// of three frames in a row would stop it a frame later.
-TEST(CeilingScaleTest, AStreamScalesTheWallsThreeFramesAtMost) {
+// too near, but each is confident on its own evidence, so none is scaled and each keeps its own
+// width.
+TEST(CeilingScaleTest, AStreamDoesNotScaleConfidentFrames) {
   const Seen s = PlainCorridor();
   ASSERT_FALSE(s.frame.bgr.empty());
   const double h = 0.66, factor = 1.4;
@@ -128,9 +124,8 @@ TEST(CeilingScaleTest, AStreamScalesTheWallsThreeFramesAtMost) {
             6);
   // The premise: the large corridor's frame is recovered right.
   ASSERT_NEAR(widths[0], large.truth.width, 0.02 * large.truth.width);
-  EXPECT_EQ(scaled, (std::vector<bool>{false, true, true, false, false, false}));
-  for (int i = 1; i <= 2; ++i) EXPECT_NEAR(widths[i], widths[0], 0.02 * widths[0]) << i;
-  for (int i = 3; i <= 5; ++i) {
+  EXPECT_EQ(scaled, std::vector<bool>(6, false));
+  for (int i = 1; i <= 5; ++i) {
     EXPECT_NEAR(widths[i], s.frame.truth.width, 0.02 * s.frame.truth.width) << i;
   }
 }
@@ -139,8 +134,8 @@ TEST(CeilingScaleTest, AStreamScalesTheWallsThreeFramesAtMost) {
 // recent width 2.0 m. A frame with walls at 0.6 and 0.8 m under a ceiling 1.4 m above the camera
 // (both 0.7 times the trusted) is scaled out by 2.0 / 1.4: walls 0.857 and 1.143 m. Its mirror,
 // walls at 1.2 and 1.6 m under 2.8 m (both 1.4 times), would be scaled in: lines inside the floor
-// never put walls too far, so it is left alone. So is a frame not in doubt whose junction line is
-// strong (kStrongJunction).
+// never put walls too far, so it is left alone. So is a frame not in doubt, whatever its junction
+// lines.
 TEST(CeilingScaleTest, WallsAreScaledOutOnly) {
   CorridorGeometry previous;
   previous.camera_height = 0.5;
@@ -159,20 +154,24 @@ TEST(CeilingScaleTest, WallsAreScaledOutOnly) {
     return result.walls_scaled;
   };
   CorridorGeometry nearer;
-  ASSERT_TRUE(scale(0.6, 0.8, 1.9, &nearer));
+  ASSERT_TRUE(scale(0.6, 0.8, 1.9, &nearer, 0.5, true));
   EXPECT_NEAR(nearer.LeftDistance(), 0.6 * 2.0 / 1.4, 1e-12);
   EXPECT_NEAR(nearer.RightDistance(), 0.8 * 2.0 / 1.4, 1e-12);
   EXPECT_DOUBLE_EQ(nearer.ceiling_height, 2.5);
   CorridorGeometry farther;
-  EXPECT_FALSE(scale(1.2, 1.6, 3.3, &farther));
+  EXPECT_FALSE(scale(1.2, 1.6, 3.3, &farther, 0.5, true));
   EXPECT_DOUBLE_EQ(farther.LeftDistance(), 1.2);
   EXPECT_DOUBLE_EQ(farther.RightDistance(), 1.6);
   EXPECT_DOUBLE_EQ(farther.ceiling_height, 3.3);
   EXPECT_DOUBLE_EQ(WallScaleFactor(previous, 0.25, farther, RecoverDepthResult()), 0.0);
-  // A strong junction line (0.8) keeps a confident frame's walls; a doubted frame is scaled.
+  // A frame not in doubt keeps its walls, with weak junction lines (0.3 and 0.5) as with a strong
+  // one (0.8); a doubted frame with a strong line is scaled.
+  for (const double line : {0.5, 0.8}) {
+    CorridorGeometry confident;
+    EXPECT_FALSE(scale(0.6, 0.8, 1.9, &confident, line)) << line;
+    EXPECT_DOUBLE_EQ(confident.width, 1.4) << line;
+  }
   CorridorGeometry strong;
-  EXPECT_FALSE(scale(0.6, 0.8, 1.9, &strong, 0.8));
-  EXPECT_DOUBLE_EQ(strong.width, 1.4);
   EXPECT_TRUE(scale(0.6, 0.8, 1.9, &strong, 0.8, true));
   EXPECT_NEAR(strong.width, 2.0, 1e-12);
 }

@@ -2,6 +2,7 @@
 // floor taken for its junction) is moved out to where its ceiling junction meets the other
 // side's ceiling; a wall on its junction is not. Truth from the generator: its frames and their
 // true geometry.
+#include <algorithm>
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -234,6 +235,35 @@ TEST(InnerLineCheckTest, ThePipelineMovesTheWallOfAnInnerLine) {
       << f.checked.fallback;
   EXPECT_NEAR(f.checked.geometry.ceiling_height, f.frame.truth.ceiling_height,
               0.05 * f.frame.truth.ceiling_height);
+}
+
+// The same frame in a sequence after a frame as narrow as the unchecked one (a recent width that
+// agrees better with the line inside the floor): the moved frame's own confidence is at least
+// min_confidence, so the recent width does not veto the move. Asked for a confidence above the
+// moved frame's, the frame is in doubt and the recent width keeps the unmoved wall.
+TEST(InnerLineCheckTest, ARecentNarrowWidthDoesNotVetoAConfidentMove) {
+  InnerLineFrame f;
+  ASSERT_NO_FATAL_FAILURE(RecoverInnerLineFrame(&f));
+  const CorridorGeometry previous = f.unchecked.geometry;
+  const auto after = [&](double min_confidence) {
+    RecoverDepthOptions options;
+    options.min_confidence = min_confidence;
+    std::unique_ptr<DepthRecoverer> recoverer;
+    EXPECT_TRUE(DepthRecoverer::Create(options, &recoverer).ok());
+    RecoverDepthResult result;
+    EXPECT_TRUE(recoverer->Detect(f.frame.bgr, f.preset.camera, &result).ok());
+    recoverer->Reconstruct(f.preset.camera, &result, &previous);
+    return result;
+  };
+  ASSERT_GE(f.checked.confidence, RecoverDepthOptions().min_confidence);  // The premise.
+  const RecoverDepthResult confident = after(RecoverDepthOptions().min_confidence);
+  EXPECT_TRUE(confident.status.ok()) << confident.status.ToString();
+  EXPECT_NE(confident.fallback.find("right wall moved out"), std::string::npos)
+      << confident.fallback;
+  EXPECT_NEAR(confident.geometry.width, f.frame.truth.width, 0.05 * f.frame.truth.width);
+  const RecoverDepthResult doubted = after(std::min(1.0, f.checked.confidence + 0.05));
+  EXPECT_EQ(doubted.fallback.find("right wall moved out"), std::string::npos) << doubted.fallback;
+  EXPECT_LT(doubted.geometry.width, 0.85 * f.frame.truth.width);
 }
 
 // The picture of a moved wall: the geometry's own right junction (thin white) lies on the true

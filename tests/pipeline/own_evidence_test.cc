@@ -1,12 +1,12 @@
-// A sequence does not change a frame whose own evidence is strong: a ceiling the frame found, whose
-// two sides were only too weak to compare, is kept over the trusted one on a frame not in doubt
-// unless a strong side of it confirms the trusted height (HoldCeiling), and then contests the
-// trusted height (SequencePrior); a tracked frame whose own whole search is confirmed by its
-// ceiling keeps that search's answer (OwnSearchKept). Numbers worked by hand: camera 0.5 m high;
-// the recent frames trusted a ceiling at 2.9 m (2.4 m above the camera) with walls 2.2 m apart;
-// this frame found its ceiling at 2.5 m (2.0 m above it, |log(2.0 / 2.4)| = 0.182) with walls
-// 2.0 m apart.
+// A sequence does not change a frame whose own evidence is strong: a frame not in doubt keeps its
+// own ceiling (or none) over the trusted one whatever its sides say (HoldCeiling), and a kept one
+// far from the trusted height contests it (SequencePrior); only a frame in doubt takes the trusted
+// ceiling. A tracked frame whose own whole search is confirmed by its ceiling keeps that search's
+// answer (OwnSearchKept). Numbers worked by hand: camera 0.5 m high; the recent frames trusted a
+// ceiling at 2.9 m (2.4 m above the camera) with walls 2.2 m apart; this frame found its ceiling at
+// 2.5 m (2.0 m above it, |log(2.0 / 2.4)| = 0.182) with walls 2.0 m apart.
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -55,9 +55,7 @@ Frame FoundCeiling(double left_height, double left_support, double right_height,
 }
 
 TEST(OwnEvidenceTest, ACeilingWhoseSidesAreTooWeakToCompareIsKeptOnAFrameNotInDoubt) {
-  // The right side's support, 0.30, is below 0.45: the sides cannot be compared (-1). The strong
-  // left side, 2.5 m, is 0.182 (|log ratio|) from the trusted 2.9 m, more than 0.10: no
-  // confirmation.
+  // The right side's support, 0.30, is below 0.45: the sides cannot be compared (-1).
   Frame f = FoundCeiling(2.5, 0.8, 2.5, 0.30);
   ASSERT_EQ(CeilingDisagreement(f.result.ceiling, 0.5, kMinSupport), -1);
   const CorridorGeometry previous = Trusted();
@@ -68,22 +66,44 @@ TEST(OwnEvidenceTest, ACeilingWhoseSidesAreTooWeakToCompareIsKeptOnAFrameNotInDo
   EXPECT_FALSE(f.result.ceiling_trusted);
   EXPECT_EQ(f.geometry.ceiling_height, 2.5);
   EXPECT_TRUE(f.result.ceiling_kept);
-  EXPECT_NE(f.result.fallback.find("the frame's own 2.50 m kept"), std::string::npos)
+  EXPECT_NE(f.result.fallback.find("the previous frame's 2.90 m not held"), std::string::npos)
       << f.result.fallback;
 }
 
-TEST(OwnEvidenceTest, AStrongSideThatAgreesWithTheTrustedCeilingConfirmsIt) {
-  // The strong left side at 2.85 m: 2.35 m above the camera, |log(2.35 / 2.4)| = 0.021 <= 0.10.
-  // The weak right one (support 0.30) at 2.15 m pulled the frame's ceiling down to 2.5 m.
-  Frame f = FoundCeiling(2.85, 0.8, 2.15, 0.30);
-  f.HoldTrusted(/*frame_doubted=*/false);
-  EXPECT_TRUE(f.result.ceiling_held);
-  EXPECT_EQ(f.geometry.ceiling_height, 2.9);
-  // The same height on the weak side confirms nothing.
-  Frame weak = FoundCeiling(2.15, 0.8, 2.85, 0.30);
-  weak.HoldTrusted(/*frame_doubted=*/false);
-  EXPECT_FALSE(weak.result.ceiling_held);
-  EXPECT_EQ(weak.geometry.ceiling_height, 2.5);
+// Every kind of untrusted ceiling: a strong side agreeing with the trusted height (2.85 m, 2.35 m
+// above the camera, |log(2.35 / 2.4)| = 0.021), walls wider than the recent frames' (2.6 m), two
+// strong sides that disagree (2.0 and 2.5 m: |log(1.5 / 2.0)| = 0.288 > 0.10), no ceiling found.
+// A frame not in doubt keeps its own; a doubted one takes the trusted 2.9 m.
+TEST(OwnEvidenceTest, OnlyAFrameInDoubtTakesTheTrustedCeiling) {
+  const auto frames = [] {
+    std::vector<Frame> made = {FoundCeiling(2.85, 0.8, 2.15, 0.30),
+                               FoundCeiling(2.5, 0.8, 2.5, 0.30), FoundCeiling(2.0, 0.8, 2.5, 0.8),
+                               FoundCeiling(0, 0, 0, 0)};
+    made[1].geometry.SetWallDistances(1.3, 1.3);
+    made[3].result.ceiling.found = false;
+    made[3].geometry.ceiling_height = 0;
+    return made;
+  };
+  ASSERT_NEAR(CeilingDisagreement(frames()[2].result.ceiling, 0.5, kMinSupport), 0.2877, 1e-4);
+  int i = 0;
+  for (Frame f : frames()) {
+    const double own = f.geometry.ceiling_height;
+    f.HoldTrusted(/*frame_doubted=*/false);
+    EXPECT_FALSE(f.result.ceiling_held) << i;
+    EXPECT_TRUE(f.result.ceiling_kept) << i;
+    EXPECT_EQ(f.geometry.ceiling_height, own) << i;
+    ++i;
+  }
+  i = 0;
+  for (Frame f : frames()) {
+    f.HoldTrusted(/*frame_doubted=*/true);
+    EXPECT_TRUE(f.result.ceiling_held) << i;
+    EXPECT_FALSE(f.result.ceiling_kept) << i;
+    EXPECT_EQ(f.geometry.ceiling_height, 2.9) << i;
+    EXPECT_NE(f.result.fallback.find("the previous frame's 2.90 m held"), std::string::npos)
+        << f.result.fallback;
+    ++i;
+  }
 }
 
 TEST(OwnEvidenceTest, AKeptCeilingFarFromTheTrustedOneContestsIt) {
@@ -126,43 +146,6 @@ TEST(OwnEvidenceTest, AKeptCeilingFarFromTheTrustedOneContestsIt) {
   // The next frame whose sides agree is trusted again.
   prior.Update(trusted);
   EXPECT_EQ(prior.Previous()->ceiling_height, 2.9);
-}
-
-TEST(OwnEvidenceTest, AWiderFrameTakesTheTrustedCeiling) {
-  // The frame's walls 2.6 m apart against the recent frames' 2.2 m: its ceiling, off from the
-  // trusted one, came with walls put too far.
-  Frame f = FoundCeiling(2.5, 0.8, 2.5, 0.30);
-  f.geometry.SetWallDistances(1.3, 1.3);
-  f.HoldTrusted(/*frame_doubted=*/false);
-  EXPECT_TRUE(f.result.ceiling_held);
-  EXPECT_FALSE(f.result.ceiling_kept);
-  EXPECT_EQ(f.geometry.ceiling_height, 2.9);
-}
-
-TEST(OwnEvidenceTest, ADoubtedFrameTakesTheTrustedCeiling) {
-  Frame f = FoundCeiling(2.5, 0.8, 2.5, 0.30);
-  f.HoldTrusted(/*frame_doubted=*/true);
-  EXPECT_TRUE(f.result.ceiling_held);
-  EXPECT_EQ(f.geometry.ceiling_height, 2.9);
-}
-
-TEST(OwnEvidenceTest, SidesThatDisagreeAreEvidenceAgainstTheFramesCeiling) {
-  // Both sides strong: 2.0 and 2.5 m, i.e. 1.5 and 2.0 m above the camera, |log(1.5 / 2.0)| =
-  // 0.288 > 0.10: a wall is wrong, and the trusted ceiling is held even on a frame not in doubt.
-  Frame f = FoundCeiling(2.0, 0.8, 2.5, 0.8);
-  ASSERT_NEAR(CeilingDisagreement(f.result.ceiling, 0.5, kMinSupport), 0.2877, 1e-4);
-  f.HoldTrusted(/*frame_doubted=*/false);
-  EXPECT_TRUE(f.result.ceiling_held);
-  EXPECT_EQ(f.geometry.ceiling_height, 2.9);
-}
-
-TEST(OwnEvidenceTest, AFrameWithoutACeilingTakesTheTrustedOne) {
-  Frame f = FoundCeiling(0, 0, 0, 0);
-  f.result.ceiling.found = false;
-  f.geometry.ceiling_height = 0;
-  f.HoldTrusted(/*frame_doubted=*/false);
-  EXPECT_TRUE(f.result.ceiling_held);
-  EXPECT_EQ(f.geometry.ceiling_height, 2.9);
 }
 
 TEST(OwnEvidenceTest, AgreeingSidesAreTrustedAndNothingIsHeld) {
