@@ -8,6 +8,7 @@
 #include <emmintrin.h>
 #endif
 
+#include "kernels/channel_plane.h"
 #include "kernels/edge_scan.h"
 
 namespace corridor {
@@ -84,13 +85,13 @@ void FindVerticalSegments(const cv::Mat& grey, const VerticalSegmentOptions& opt
   // corners are edges in every channel, and green is the one a colour camera samples best. It is
   // taken out as a plane of its own, so that the rows' loops below read contiguous bytes and the
   // compiler vectorises them.
-  thread_local cv::Mat planes[4];  // Per-thread buffers: they only grow, so a stream of frames
-                                   // allocates nothing here.
+  thread_local cv::Mat green;  // The thread's buffer: a stream of frames of one size allocates
+                               // nothing here.
   const cv::Mat* plane = &grey;
   if (grey.channels() > 1) {
     if (grey.channels() > 4) return;
-    cv::split(grey, planes);
-    plane = &planes[1];
+    ChannelPlane(grey, 1, &green);
+    plane = &green;
   }
   thread_local std::vector<short> row;
   thread_local std::vector<uchar> strong;
