@@ -44,7 +44,9 @@ CORRIDOR_ALWAYS_INLINE inline void BlurBody(const cv::Mat& image, int from, int 
     } else {
 #ifdef CORRIDOR_AVX2_VARIANTS
       if constexpr (kAvx2) {
-        binomial::WeightedColumnSums5Avx2(row(-2), row(-1), row(0), row(1), row(2), n, k, v);
+        // Biased sums, for the row pass's 32-bit pairs (WeightedRowSums5BiasedAvx2).
+        binomial::WeightedColumnSums5BiasedAvx2(row(-2), row(-1), row(0), row(1), row(2), n, k,
+                                                v);
       } else {
         binomial::WeightedColumnSums5(row(-2), row(-1), row(0), row(1), row(2), n, k, v);
       }
@@ -59,7 +61,15 @@ CORRIDOR_ALWAYS_INLINE inline void BlurBody(const cv::Mat& image, int from, int 
     } else if (kTaps == 5) {
       binomial::RowSums5<C>(v, n, h);
     } else {
+#ifdef CORRIDOR_AVX2_VARIANTS
+      if constexpr (kAvx2) {
+        binomial::WeightedRowSums5BiasedAvx2<C>(v, n, k, h);
+      } else {
+        binomial::WeightedRowSums5<C>(v, n, k, h);
+      }
+#else
       binomial::WeightedRowSums5<C>(v, n, k, h);
+#endif
     }
   }
 }

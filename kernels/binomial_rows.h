@@ -149,6 +149,82 @@ __attribute__((target("avx2"))) inline void WeightedColumnSums5Avx2(
                                  k.centre * r2[i]);
   }
 }
+
+// WeightedColumnSums5Avx2 with the sums' top bit flipped (v ^ 0x8000, v - 2^15 as a signed 16-bit
+// integer), as WeightedRowSums5BiasedAvx2 reads them.
+__attribute__((target("avx2"))) inline void WeightedColumnSums5BiasedAvx2(
+    const uint8_t* r0, const uint8_t* r1, const uint8_t* r2, const uint8_t* r3, const uint8_t* r4,
+    int n, Kernel5 k, uint16_t* __restrict v) {
+  const __m256i far = _mm256_set1_epi16(static_cast<short>(k.far));
+  const __m256i near = _mm256_set1_epi16(static_cast<short>(k.near));
+  const __m256i centre = _mm256_set1_epi16(static_cast<short>(k.centre));
+  const __m256i top_bit = _mm256_set1_epi16(static_cast<short>(0x8000));
+  int i = 0;
+  for (; i + 16 <= n; i += 16) {
+    const __m256i outer = _mm256_mullo_epi16(_mm256_add_epi16(Widen16(r0 + i), Widen16(r4 + i)), far);
+    const __m256i inner =
+        _mm256_mullo_epi16(_mm256_add_epi16(Widen16(r1 + i), Widen16(r3 + i)), near);
+    const __m256i middle = _mm256_mullo_epi16(Widen16(r2 + i), centre);
+    _mm256_storeu_si256(
+        reinterpret_cast<__m256i*>(v + i),
+        _mm256_xor_si256(_mm256_add_epi16(_mm256_add_epi16(outer, inner), middle), top_bit));
+  }
+  for (; i < n; ++i) {
+    v[i] = static_cast<uint16_t>(
+        (k.far * (r0[i] + r4[i]) + k.near * (r1[i] + r3[i]) + k.centre * r2[i]) ^ 0x8000);
+  }
+}
+
+// Sixteen pixels of WeightedRowSums5BiasedAvx2 at v[i], as 16-bit values in order (the in-lane
+// unpacks' order packed back): `far`, `near` and `centre` its weight pairs, `restore` its 16448.
+template <int C>
+__attribute__((target("avx2"))) inline __m256i WeightedSixteenBiased(const uint16_t* v, int i,
+                                                                     __m256i far, __m256i near,
+                                                                     __m256i centre,
+                                                                     __m256i restore) {
+  const __m256i a = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(v + i - 2 * C));
+  const __m256i b = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(v + i - C));
+  const __m256i c = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(v + i));
+  const __m256i d = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(v + i + C));
+  const __m256i e = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(v + i + 2 * C));
+  const __m256i low = _mm256_add_epi32(
+      _mm256_add_epi32(_mm256_madd_epi16(_mm256_unpacklo_epi16(a, e), far),
+                       _mm256_madd_epi16(_mm256_unpacklo_epi16(b, d), near)),
+      _mm256_madd_epi16(_mm256_unpacklo_epi16(c, restore), centre));
+  const __m256i high = _mm256_add_epi32(
+      _mm256_add_epi32(_mm256_madd_epi16(_mm256_unpackhi_epi16(a, e), far),
+                       _mm256_madd_epi16(_mm256_unpackhi_epi16(b, d), near)),
+      _mm256_madd_epi16(_mm256_unpackhi_epi16(c, restore), centre));
+  return _mm256_packus_epi32(_mm256_srli_epi32(low, 16), _mm256_srli_epi32(high, 16));
+}
+
+// WeightedRowSums5 on the biased sums of WeightedColumnSums5BiasedAvx2, 32 pixels a step: the
+// exact sum of weights times sums plus 2^15, shifted down by 16 (which WeightedRowSums5's halves
+// give too), in 32-bit lanes by pairs (vpmaddwd): (a, e) and (b, d) by (far, far) and
+// (near, near), and (c, 16448) by (centre, 512), whose 16448 * 512 = 2^23 + 2^15 restores the
+// bias (256 weights of 2^15) and adds the rounding. The same pixels.
+template <int C>
+__attribute__((target("avx2"))) inline void WeightedRowSums5BiasedAvx2(const uint16_t* v, int n,
+                                                                       Kernel5 k,
+                                                                       uint8_t* __restrict h) {
+  const __m256i far = _mm256_set1_epi32(static_cast<int>(k.far) * 0x10001);
+  const __m256i near = _mm256_set1_epi32(static_cast<int>(k.near) * 0x10001);
+  const __m256i centre = _mm256_set1_epi32(static_cast<int>(k.centre) | (512 << 16));
+  const __m256i restore = _mm256_set1_epi16(16448);
+  int i = 0;
+  for (; i + 32 <= n; i += 32) {
+    const __m256i bytes =
+        _mm256_packus_epi16(WeightedSixteenBiased<C>(v, i, far, near, centre, restore),
+                            WeightedSixteenBiased<C>(v, i + 16, far, near, centre, restore));
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(h + i), _mm256_permute4x64_epi64(bytes, 0xd8));
+  }
+  for (; i < n; ++i) {
+    const int a = v[i - 2 * C] ^ 0x8000, b = v[i - C] ^ 0x8000, c = v[i] ^ 0x8000;
+    const int d = v[i + C] ^ 0x8000, e = v[i + 2 * C] ^ 0x8000;
+    const int sum = k.far * (a + e) + k.near * (b + d) + k.centre * c;
+    h[i] = static_cast<uint8_t>((sum + (1 << 15)) >> 16);
+  }
+}
 #endif
 
 }  // namespace binomial
