@@ -59,7 +59,15 @@ CORRIDOR_ALWAYS_INLINE inline void BlurBody(const cv::Mat& image, int from, int 
     if (kTaps == 3) {
       binomial::RowSums3<C>(v, n, h);
     } else if (kTaps == 5) {
+#ifdef CORRIDOR_AVX2_VARIANTS
+      if constexpr (kAvx2) {
+        binomial::RowSums5Avx2<C>(v, n, h);
+      } else {
+        binomial::RowSums5<C>(v, n, h);
+      }
+#else
       binomial::RowSums5<C>(v, n, h);
+#endif
     } else {
 #ifdef CORRIDOR_AVX2_VARIANTS
       if constexpr (kAvx2) {

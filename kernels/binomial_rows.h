@@ -128,6 +128,35 @@ __attribute__((target("avx2"))) inline void ColumnSums5Avx2(const uint8_t* r0, c
   }
 }
 
+// Sixteen 16-bit values from memory.
+__attribute__((target("avx2"))) inline __m256i Load16(const uint16_t* p) {
+  return _mm256_loadu_si256(reinterpret_cast<const __m256i*>(p));
+}
+
+// Sixteen pixels of RowSums5Avx2 at v[i], as 16-bit values.
+template <int C>
+__attribute__((target("avx2"))) inline __m256i RowSixteen5(const uint16_t* v, int i) {
+  const __m256i outer = _mm256_add_epi16(Load16(v + i - 2 * C), Load16(v + i + 2 * C));
+  const __m256i inner = _mm256_slli_epi16(_mm256_add_epi16(Load16(v + i - C), Load16(v + i + C)), 2);
+  const __m256i centre = _mm256_mullo_epi16(Load16(v + i), _mm256_set1_epi16(6));
+  const __m256i sum = _mm256_add_epi16(_mm256_add_epi16(outer, inner),
+                                       _mm256_add_epi16(centre, _mm256_set1_epi16(128)));
+  return _mm256_srli_epi16(sum, 8);
+}
+
+// RowSums5 32 pixels a step (the sums, at most 256 * 255 + 128, stay below 2^16), then pixel by
+// pixel: the same pixels. For AVX2 callers only.
+template <int C>
+__attribute__((target("avx2"))) inline void RowSums5Avx2(const uint16_t* v, int n,
+                                                         uint8_t* __restrict h) {
+  int i = 0;
+  for (; i + 32 <= n; i += 32) {
+    const __m256i bytes = _mm256_packus_epi16(RowSixteen5<C>(v, i), RowSixteen5<C>(v, i + 16));
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(h + i), _mm256_permute4x64_epi64(bytes, 0xd8));
+  }
+  RowSums5<C>(v + i, n - i, h + i);
+}
+
 // WeightedColumnSums5 the same way: the same sums (at most 256 * 255, exact in 16 bits).
 __attribute__((target("avx2"))) inline void WeightedColumnSums5Avx2(
     const uint8_t* r0, const uint8_t* r1, const uint8_t* r2, const uint8_t* r3, const uint8_t* r4,

@@ -75,7 +75,7 @@ __attribute__((target("avx2"))) void PyrDownAvx2(const cv::Mat& src, const cv::M
     const uint8_t* r4 = src.ptr<uint8_t>(Reflect101(2 * y + 2, height));
     binomial::ColumnSums5Avx2(r0, r1, r2, r3, r4, n, v);
     binomial::ReflectEnds<C>(v, width, 2);
-    binomial::RowSums5<C>(v, n, h);
+    binomial::RowSums5Avx2<C>(v, n, h);
     EverySecondPixel<C>(h, out_width, out.ptr<uint8_t>(y));
   }
   *dst = out;
