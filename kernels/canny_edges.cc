@@ -163,16 +163,7 @@ __attribute__((target("avx2"))) void SuppressRowAvx2(const RowView& r, int cols,
   for (; j + 8 <= cols; j += 8) {
     uint64_t word;
     std::memcpy(&word, r.candidate + j, 8);
-    if (word == 0) {
-      // Past eight pixels without a candidate, runs of 32 more (most of a row) in one test each.
-      const __m256i all = _mm256_set1_epi8(-1);
-      while (j + 40 <= cols &&
-             _mm256_testz_si256(
-                 _mm256_loadu_si256(reinterpret_cast<const __m256i*>(r.candidate + j + 8)), all)) {
-        j += 32;
-      }
-      continue;
-    }
+    if (word == 0) continue;
     const __m256i m = Load(r.centre + j);
     const __m256i x = LoadWidened(r.x + j);
     const __m256i y = LoadWidened(r.y + j);
