@@ -157,30 +157,9 @@ __attribute__((target("avx2"))) inline void RowSums5Avx2(const uint16_t* v, int 
   RowSums5<C>(v + i, n - i, h + i);
 }
 
-// WeightedColumnSums5 the same way: the same sums (at most 256 * 255, exact in 16 bits).
-__attribute__((target("avx2"))) inline void WeightedColumnSums5Avx2(
-    const uint8_t* r0, const uint8_t* r1, const uint8_t* r2, const uint8_t* r3, const uint8_t* r4,
-    int n, Kernel5 k, uint16_t* __restrict v) {
-  const __m256i far = _mm256_set1_epi16(static_cast<short>(k.far));
-  const __m256i near = _mm256_set1_epi16(static_cast<short>(k.near));
-  const __m256i centre = _mm256_set1_epi16(static_cast<short>(k.centre));
-  int i = 0;
-  for (; i + 16 <= n; i += 16) {
-    const __m256i outer = _mm256_mullo_epi16(_mm256_add_epi16(Widen16(r0 + i), Widen16(r4 + i)), far);
-    const __m256i inner =
-        _mm256_mullo_epi16(_mm256_add_epi16(Widen16(r1 + i), Widen16(r3 + i)), near);
-    const __m256i middle = _mm256_mullo_epi16(Widen16(r2 + i), centre);
-    _mm256_storeu_si256(reinterpret_cast<__m256i*>(v + i),
-                        _mm256_add_epi16(_mm256_add_epi16(outer, inner), middle));
-  }
-  for (; i < n; ++i) {
-    v[i] = static_cast<uint16_t>(k.far * (r0[i] + r4[i]) + k.near * (r1[i] + r3[i]) +
-                                 k.centre * r2[i]);
-  }
-}
-
-// WeightedColumnSums5Avx2 with the sums' top bit flipped (v ^ 0x8000, v - 2^15 as a signed 16-bit
-// integer), as WeightedRowSums5BiasedAvx2 reads them.
+// WeightedColumnSums5 16 pixels a step (the sums, at most 256 * 255, exact in 16 bits), with the
+// sums' top bit flipped (v ^ 0x8000, v - 2^15 as a signed 16-bit integer), as
+// WeightedRowSums5BiasedAvx2 reads them.
 __attribute__((target("avx2"))) inline void WeightedColumnSums5BiasedAvx2(
     const uint8_t* r0, const uint8_t* r1, const uint8_t* r2, const uint8_t* r3, const uint8_t* r4,
     int n, Kernel5 k, uint16_t* __restrict v) {
