@@ -9,6 +9,7 @@
 #include <cstdint>
 
 #include "core/cpu_features.h"
+#include "kernels/avx2_loads.h"
 #include "kernels/image_border.h"
 
 #ifdef CORRIDOR_AVX2_VARIANTS
@@ -103,10 +104,8 @@ CORRIDOR_ALWAYS_INLINE inline void WeightedRowSums5(const uint16_t* v, int n, Ke
 }
 
 #ifdef CORRIDOR_AVX2_VARIANTS
-// Sixteen bytes widened to 16 bits, straight from memory.
-__attribute__((target("avx2"))) inline __m256i Widen16(const uint8_t* p) {
-  return _mm256_cvtepu8_epi16(_mm_loadu_si128(reinterpret_cast<const __m128i*>(p)));
-}
+using avx2::Load16;
+using avx2::Widen16;
 
 // ColumnSums5 sixteen bytes a step, each widened straight from memory (the vectoriser takes 32 at
 // a time and splits the upper half out of a register): the same sums. For AVX2 callers only.
@@ -128,16 +127,12 @@ __attribute__((target("avx2"))) inline void ColumnSums5Avx2(const uint8_t* r0, c
   }
 }
 
-// Sixteen 16-bit values from memory.
-__attribute__((target("avx2"))) inline __m256i Load16(const uint16_t* p) {
-  return _mm256_loadu_si256(reinterpret_cast<const __m256i*>(p));
-}
-
 // Sixteen pixels of RowSums5Avx2 at v[i], as 16-bit values.
 template <int C>
 __attribute__((target("avx2"))) inline __m256i RowSixteen5(const uint16_t* v, int i) {
   const __m256i outer = _mm256_add_epi16(Load16(v + i - 2 * C), Load16(v + i + 2 * C));
-  const __m256i inner = _mm256_slli_epi16(_mm256_add_epi16(Load16(v + i - C), Load16(v + i + C)), 2);
+  const __m256i inner =
+      _mm256_slli_epi16(_mm256_add_epi16(Load16(v + i - C), Load16(v + i + C)), 2);
   const __m256i centre = _mm256_mullo_epi16(Load16(v + i), _mm256_set1_epi16(6));
   const __m256i sum = _mm256_add_epi16(_mm256_add_epi16(outer, inner),
                                        _mm256_add_epi16(centre, _mm256_set1_epi16(128)));
@@ -190,11 +185,8 @@ __attribute__((target("avx2"))) inline __m256i WeightedSixteenBiased(const uint1
                                                                      __m256i far, __m256i near,
                                                                      __m256i centre,
                                                                      __m256i restore) {
-  const __m256i a = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(v + i - 2 * C));
-  const __m256i b = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(v + i - C));
-  const __m256i c = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(v + i));
-  const __m256i d = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(v + i + C));
-  const __m256i e = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(v + i + 2 * C));
+  const __m256i a = Load16(v + i - 2 * C), b = Load16(v + i - C), c = Load16(v + i);
+  const __m256i d = Load16(v + i + C), e = Load16(v + i + 2 * C);
   const __m256i low = _mm256_add_epi32(
       _mm256_add_epi32(_mm256_madd_epi16(_mm256_unpacklo_epi16(a, e), far),
                        _mm256_madd_epi16(_mm256_unpacklo_epi16(b, d), near)),

@@ -10,6 +10,7 @@
 #endif
 
 #include "core/cpu_features.h"
+#include "kernels/avx2_loads.h"
 #include "kernels/image_border.h"
 #include "kernels/three_channels.h"
 
@@ -42,9 +43,8 @@ __attribute__((target("avx2"))) inline void SobelSumsAvx2(const uchar* above, co
                                                           short* t) {
   int u = 0;
   for (; u + 16 <= cols; u += 16) {
-    const __m256i a = _mm256_cvtepu8_epi16(_mm_loadu_si128(reinterpret_cast<const __m128i*>(above + u)));
-    const __m256i c = _mm256_cvtepu8_epi16(_mm_loadu_si128(reinterpret_cast<const __m128i*>(centre + u)));
-    const __m256i b = _mm256_cvtepu8_epi16(_mm_loadu_si128(reinterpret_cast<const __m128i*>(below + u)));
+    const __m256i a = avx2::Widen16(above + u), c = avx2::Widen16(centre + u);
+    const __m256i b = avx2::Widen16(below + u);
     _mm256_storeu_si256(reinterpret_cast<__m256i*>(s + u + 1),
                         _mm256_add_epi16(_mm256_add_epi16(a, b), _mm256_slli_epi16(c, 1)));
     _mm256_storeu_si256(reinterpret_cast<__m256i*>(t + u + 1), _mm256_sub_epi16(b, a));
