@@ -6,6 +6,7 @@
 
 #include "pipeline/ceiling_agreement.h"
 #include "pipeline/ceiling_split.h"
+#include "pipeline/chosen_solve.h"
 #include "pipeline/frame_handover.h"
 #include "pipeline/image_input.h"
 #include "pipeline/one_junction.h"
@@ -33,7 +34,10 @@ double SecondsSince(Clock::time_point start) {
 DepthRecoverer::DepthRecoverer(const RecoverDepthOptions& options,
                                std::unique_ptr<CorridorSolver> solver,
                                std::unique_ptr<DepthRasterizer> rasterizer)
-    : options_(options), solver_(std::move(solver)), rasterizer_(std::move(rasterizer)) {}
+    : options_(options),
+      solver_(std::move(solver)),
+      layout_options_(LayoutOptions(options)),
+      rasterizer_(std::move(rasterizer)) {}
 
 Status DepthRecoverer::Create(const RecoverDepthOptions& options,
                               std::unique_ptr<DepthRecoverer>* recoverer) {
@@ -46,7 +50,11 @@ Status DepthRecoverer::Create(const RecoverDepthOptions& options,
   std::unique_ptr<DepthRasterizer> rasterizer;
   status = CreateRasterizer(options.rasterizer, options.rasterizer_options, &rasterizer);
   if (!status.ok()) return status;
+  std::unique_ptr<CorridorSolver> layout_solver;
+  status = CreateSolver(LayoutSolverName(), options.solver_options, &layout_solver);
+  if (!status.ok()) return status;
   recoverer->reset(new DepthRecoverer(options, std::move(solver), std::move(rasterizer)));
+  (*recoverer)->layout_solver_ = std::move(layout_solver);
   if (options.level_roll) {
     RecoverDepthOptions level = options;
     level.level_roll = false;
@@ -199,11 +207,11 @@ Status DepthRecoverer::ReconstructAsSeen(const Camera& camera, RecoverDepthResul
     if (result->handover != nullptr) {
       MeasureSolverEvidence(result->handover->image, options_, &result->junctions);
     }
-    // The thread's observation, whose point vectors keep their memory from frame to frame.
+    // The layout's solve (chosen_solve.h); the thread's observation keeps its memory.
     thread_local CorridorObservation thread_observation;
     const CorridorObservation& observation = thread_observation;
-    ObservationFromJunctions(result->junctions, camera, options_, &thread_observation);
-    status = solver_->Solve(observation, nullptr, &result->solver_summary);
+    ObservationFromJunctions(result->junctions, camera, layout_options_, &thread_observation);
+    status = layout_solver_->Solve(observation, nullptr, &result->solver_summary);
     result->times.solve = SecondsSince(stage);
     if (!status.ok()) {
       if (status.code() == StatusCode::kInvalidArgument) {
@@ -213,8 +221,8 @@ Status DepthRecoverer::ReconstructAsSeen(const Camera& camera, RecoverDepthResul
     }
     geometry = result->solver_summary.estimate;
     geometry.camera_height = camera.mount_height;
-    status = CheckPlausibleShape(geometry, options_);
-    if (status.ok()) status = CheckLineFit(geometry, observation, camera, options_);
+    status = CheckPlausibleShape(geometry, layout_options_);
+    if (status.ok()) status = CheckLineFit(geometry, observation, camera, layout_options_);
     if (!status.ok()) return finish(status);
   }
   geometry.ceiling_height = options_.ceiling_height;
@@ -238,7 +246,7 @@ Status DepthRecoverer::ReconstructAsSeen(const Camera& camera, RecoverDepthResul
   if (search_end_wall && WorkingScale(search.bgr.cols, options_.end_wall.max_work_width) == 1) {
     ComputeImageEdges(search.bgr, &edges);
   }
-  const WallCheckInputs checks{options_, *solver_, camera, search, &edges};
+  const WallCheckInputs checks{layout_options_, *layout_solver_, camera, search, &edges};
   if (search_ceiling) {
     status = SearchCeiling(checks, &geometry, &result->ceiling);
     if (!status.ok()) return finish(status);
@@ -253,6 +261,15 @@ Status DepthRecoverer::ReconstructAsSeen(const Camera& camera, RecoverDepthResul
       status = MoveInnerWall(checks, previous, &geometry, result);
       if (!status.ok()) return finish(status);
     }
+  }
+  // The options' own solver on the junctions the checks leave (unless the inner-line check moved
+  // a wall: that wall is the ceiling's, not a junction line's).
+  if (ChosenSolveDiffers(options_) && result->junctions.status.ok() && result->moved_side < 0) {
+    const auto solve_start = Clock::now();
+    status = ChosenSolve(*solver_, options_, result->junctions, camera, &geometry,
+                         &result->solver_summary);
+    result->times.solve += SecondsSince(solve_start);
+    if (!status.ok()) return finish(status);
   }
   // The width hold comes after the checks, which may have moved a wall out with this frame's own
   // evidence. A width still much narrower whose two ceiling junctions, each searched alone, agree

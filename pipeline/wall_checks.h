@@ -15,8 +15,8 @@ namespace corridor {
 // DepthRecoverer::Reconstruct after the solver. They work on the frame's search image (the frame
 // halved to search_max_width) and share its edges.
 struct WallCheckInputs {
-  const RecoverDepthOptions& options;  // The recoverer's options.
-  const CorridorSolver& solver;        // The recoverer's solver (the baseboard check solves again).
+  const RecoverDepthOptions& options;  // The layout's options (chosen_solve.h: evidence "lines").
+  const CorridorSolver& solver;        // The layout's solver (the baseboard check solves again).
   const Camera& camera;                // The frame's camera at full resolution.
   const WorkingImage& search;          // The search image and its camera.
   ImageEdges* edges;                   // The search image's edges, computed on demand and shared.

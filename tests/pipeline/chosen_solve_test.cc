@@ -1,0 +1,132 @@
+// The layout and the chosen solver (pipeline/chosen_solve.h): on a generated corridor, every
+// solver and evidence sees the same junctions and ceiling (the layout is decided once), and the
+// geometry reported is the named solver's own estimate from them, checked by solving those
+// junctions again here; a solver whose estimate is implausible is refused and changes nothing.
+#include <cmath>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "corridor_depth/recover_depth.h"
+#include "pipeline/chosen_solve.h"
+#include "pipeline/solver_evidence.h"
+#include "tests/support/corridor_frame.h"
+
+namespace corridor {
+namespace {
+
+Camera TestCamera() { return Camera::FromHorizontalFov(640, 480, 80.0 * M_PI / 180, 0.7); }
+
+TEST(ChosenSolveTest, EverySolverSeesOneLayoutAndReportsItsOwnEstimate) {
+  const Camera camera = TestCamera();
+  const synth::Frame frame = testing_util::RenderCorridorFrame(
+      camera, 2.2, 2.8, 5, synth::CameraPose{0.06, 0.04, 0.25, 0.7, 3.0});
+  ASSERT_FALSE(frame.bgr.empty());
+  RecoverDepthOptions layout_options;
+  RecoverDepthResult layout;
+  ASSERT_TRUE(RecoverDepth(frame.bgr, camera, layout_options, &layout).ok())
+      << layout.status.ToString();
+  for (const std::string evidence : {"lines", "edges"}) {
+    CorridorGeometry joint;
+    for (const std::string solver : {"joint", "grid", "closed_form+lm"}) {
+      SCOPED_TRACE(solver + " on " + evidence);
+      RecoverDepthOptions options;
+      options.solver = solver;
+      options.solver_evidence = evidence;
+      RecoverDepthResult result;
+      ASSERT_TRUE(RecoverDepth(frame.bgr, camera, options, &result).ok())
+          << result.status.ToString();
+      // One layout: the junction lines are those of the default run, whatever the solver.
+      for (int k = 0; k < 3; ++k) {
+        EXPECT_DOUBLE_EQ(result.junctions.left.line[k], layout.junctions.left.line[k]);
+        EXPECT_DOUBLE_EQ(result.junctions.right.line[k], layout.junctions.right.line[k]);
+      }
+      // The ceiling is searched for the layout's walls: its height is the default run's.
+      EXPECT_DOUBLE_EQ(result.geometry.ceiling_height, layout.geometry.ceiling_height);
+      // The solver's own estimate from those junctions, solved again here.
+      std::unique_ptr<CorridorSolver> direct;
+      ASSERT_TRUE(CreateSolver(solver, options.solver_options, &direct).ok());
+      const CorridorObservation observation =
+          ObservationFromJunctions(result.junctions, camera, options);
+      SolverSummary summary;
+      ASSERT_TRUE(direct->Solve(observation, nullptr, &summary).ok());
+      EXPECT_NEAR(result.geometry.width, summary.estimate.width, 1e-9);
+      EXPECT_NEAR(result.geometry.yaw, summary.estimate.yaw, 1e-12);
+      EXPECT_NEAR(result.geometry.pitch, summary.estimate.pitch, 1e-12);
+      EXPECT_NEAR(result.geometry.offset, summary.estimate.offset, 1e-9);
+      EXPECT_NEAR(result.geometry.width, frame.truth.width, 0.02 * frame.truth.width);
+      if (solver == "joint") {
+        joint = result.geometry;
+      } else if (solver == "grid") {
+        // The grid's steps put it off the exact fit: its own answer, not the layout's.
+        EXPECT_GT(std::abs(result.geometry.yaw - joint.yaw) +
+                      std::abs(result.geometry.pitch - joint.pitch) +
+                      std::abs(result.geometry.width - joint.width),
+                  1e-7);
+      }
+    }
+  }
+}
+
+// A solver that always answers `estimate`.
+class FixedSolver : public CorridorSolver {
+ public:
+  explicit FixedSolver(const CorridorGeometry& estimate) : estimate_(estimate) {}
+  std::string Name() const override { return "fixed"; }
+  Status Solve(const CorridorObservation&, const CorridorGeometry*,
+               SolverSummary* summary) const override {
+    summary->estimate = estimate_;
+    return Status::Ok();
+  }
+
+ private:
+  CorridorGeometry estimate_;
+};
+
+TEST(ChosenSolveTest, AnImplausibleEstimateIsRefusedAndChangesNothing) {
+  const Camera camera = TestCamera();
+  const synth::Frame frame = testing_util::RenderCorridorFrame(
+      camera, 2.2, 2.8, 5, synth::CameraPose{0.06, 0.04, 0.25, 0.7, 3.0});
+  ASSERT_FALSE(frame.bgr.empty());
+  RecoverDepthOptions options;
+  RecoverDepthResult result;
+  ASSERT_TRUE(RecoverDepth(frame.bgr, camera, options, &result).ok());
+  const CorridorGeometry before = result.geometry;
+  CorridorGeometry implausible = before;
+  implausible.offset = before.width;  // The camera outside the walls.
+  CorridorGeometry geometry = before;
+  SolverSummary summary;
+  summary.solver_name = "untouched";
+  const Status status = ChosenSolve(FixedSolver(implausible), options, result.junctions, camera,
+                                    &geometry, &summary);
+  EXPECT_EQ(status.code(), StatusCode::kImplausibleGeometry) << status.ToString();
+  EXPECT_EQ(geometry.width, before.width);
+  EXPECT_EQ(geometry.offset, before.offset);
+  EXPECT_EQ(summary.solver_name, "untouched");
+
+  // A plausible estimate is taken, with the frame's camera and ceiling heights.
+  CorridorGeometry plausible = before;
+  plausible.width = 1.01 * before.width;
+  plausible.camera_height = 0;
+  plausible.ceiling_height = 0;
+  ASSERT_TRUE(ChosenSolve(FixedSolver(plausible), options, result.junctions, camera, &geometry,
+                          &summary)
+                  .ok());
+  EXPECT_EQ(geometry.width, plausible.width);
+  EXPECT_EQ(geometry.camera_height, before.camera_height);
+  EXPECT_EQ(geometry.ceiling_height, before.ceiling_height);
+}
+
+TEST(ChosenSolveTest, TheLayoutIsJointOnLines) {
+  RecoverDepthOptions options;
+  options.solver = "grid";
+  options.solver_evidence = "edges";
+  const RecoverDepthOptions layout = LayoutOptions(options);
+  EXPECT_EQ(layout.solver, "joint");
+  EXPECT_EQ(layout.solver_evidence, "lines");
+  EXPECT_TRUE(ChosenSolveDiffers(options));
+  EXPECT_FALSE(ChosenSolveDiffers(RecoverDepthOptions()));
+}
+
+}  // namespace
+}  // namespace corridor
