@@ -9,11 +9,15 @@
 // and the same cost (1/2 sum rho(r^2)), so it stops where a Ceres solve of the same problem stops.
 //
 // Residuals: `int size() const` and `template <typename T> bool operator()(int i, const T* x,
-// T* r) const` (false: residual i cannot be evaluated at x).
+// T* r) const` (false: residual i cannot be evaluated at x). Optionally `template <typename T>
+// bool Prepare(const T* x) const`, called before residuals at a new x are evaluated, for the work
+// they all share (false: x cannot be evaluated).
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
+#include <utility>
 
 #include <ceres/jet.h>
 
@@ -109,10 +113,28 @@ inline void Correct(const RobustLoss& loss, double residual, double* cost, doubl
   *jacobian_scale = sqrt_rho1 * (1.0 - alpha / s * s);
 }
 
+template <typename Residuals, typename T, typename = void>
+struct HasPrepare : std::false_type {};
+template <typename Residuals, typename T>
+struct HasPrepare<Residuals, T,
+                  std::void_t<decltype(std::declval<const Residuals&>().Prepare(
+                      std::declval<const T*>()))>> : std::true_type {};
+
+// Residuals::Prepare(x) when there is one.
+template <typename Residuals, typename T>
+bool Prepare(const Residuals& residuals, const T* x) {
+  if constexpr (HasPrepare<Residuals, T>::value) {
+    return residuals.Prepare(x);
+  } else {
+    return true;
+  }
+}
+
 template <int N, typename Residuals>
 bool EvaluateCost(const Residuals& residuals, const RobustLoss& loss, const double* x,
                   double* cost) {
   double sum = 0;
+  if (!Prepare(residuals, x)) return false;
   for (int i = 0; i < residuals.size(); ++i) {
     double r = 0, term = 0, unused_r = 0, unused_j = 0;
     if (!residuals(i, x, &r) || !std::isfinite(r)) return false;
@@ -121,6 +143,30 @@ bool EvaluateCost(const Residuals& residuals, const RobustLoss& loss, const doub
   }
   *cost = sum;
   return std::isfinite(sum);
+}
+
+// The triangular system [R | z] with R'R = J'J and R'z = J'f, from [J'J | J'f] (`normal`, upper
+// triangle) by Cholesky: what rotating every row of [J | f] in (AddRow) gives, up to the rows'
+// signs, at a fraction of the cost for many rows. A pivot lost to rounding (a column that J does
+// not determine) leaves its row zero, as rotations would.
+template <int N>
+void NormalToTriangular(const double (*normal)[N + 1], double (*r)[N + 1]) {
+  for (int k = 0; k < N; ++k) {
+    double pivot = normal[k][k];
+    for (int m = 0; m < k; ++m) pivot -= r[m][k] * r[m][k];
+    if (!(pivot > 1e-13 * normal[k][k]) || !(pivot > 0)) {
+      for (int j = 0; j <= N; ++j) r[k][j] = 0;
+      continue;
+    }
+    const double diagonal = std::sqrt(pivot);
+    for (int j = 0; j < k; ++j) r[k][j] = 0;
+    r[k][k] = diagonal;
+    for (int j = k + 1; j <= N; ++j) {
+      double v = normal[k][j];
+      for (int m = 0; m < k; ++m) v -= r[m][k] * r[m][j];
+      r[k][j] = v / diagonal;
+    }
+  }
 }
 
 template <int N, typename Residuals>
@@ -133,6 +179,8 @@ void Linearize(const Residuals& residuals, const RobustLoss& loss, const double*
     lin->x[k] = x[k];
     xj[k] = Jet(x[k], k);
   }
+  if (!Prepare(residuals, static_cast<const Jet*>(xj))) return;
+  double normal[N][N + 1] = {};  // [J'J | J'f], upper triangle.
   for (int i = 0; i < residuals.size(); ++i) {
     Jet r;
     if (!residuals(i, xj, &r) || !std::isfinite(r.a)) return;
@@ -147,8 +195,11 @@ void Linearize(const Residuals& residuals, const RobustLoss& loss, const double*
       lin->gradient[k] += row[k] * row[N];
       lin->column_sq[k] += row[k] * row[k];
     }
-    AddRow<N>(lin->r, row);
+    for (int k = 0; k < N; ++k) {
+      for (int j = k; j <= N; ++j) normal[k][j] += row[k] * row[j];
+    }
   }
+  NormalToTriangular<N>(normal, lin->r);
   lin->ok = std::isfinite(lin->cost);
 }
 

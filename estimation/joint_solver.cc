@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <type_traits>
 #include <vector>
 
 #include "estimation/bounded_lm.h"
@@ -14,25 +15,52 @@ namespace {
 
 // The JunctionLineResidual of every edge point, times the square root of its weight (the
 // maximum-likelihood fit for points of variance 1 / weight): the left junction's points, then the
-// right's.
-struct JunctionResiduals {
-  const CorridorObservation& observation;
-  const FloorIntrinsics intrinsics;
+// right's. Prepare computes the two sides' lines once per x; each residual is then a point's
+// distance from its side's line.
+class JunctionResiduals {
+ public:
+  using Jet = ceres::Jet<double, 4>;
+  JunctionResiduals(const CorridorObservation& observation, const FloorIntrinsics& intrinsics)
+      : observation_(observation), intrinsics_(intrinsics) {}
 
-  int size() const { return static_cast<int>(observation.left.size() + observation.right.size()); }
+  int size() const { return static_cast<int>(observation_.left.size() + observation_.right.size()); }
+
+  bool Prepare(const double* x) const { return PrepareInto(x, lines_); }
+  bool Prepare(const Jet* x) const { return PrepareInto(x, jet_lines_); }
 
   template <typename T>
-  bool operator()(int i, const T* x, T* residual) const {
-    const int left = static_cast<int>(observation.left.size());
+  bool operator()(int i, const T* /*x, in the lines Prepare computed*/, T* residual) const {
+    const int left = static_cast<int>(observation_.left.size());
     const int side = i < left ? -1 : 1;
     const size_t k = static_cast<size_t>(i < left ? i : i - left);
-    const auto& p = side < 0 ? observation.left[k] : observation.right[k];
-    if (!JunctionLineResidual(intrinsics, p.x(), p.y(), side)(x, residual)) return false;
+    const auto& p = side < 0 ? observation_.left[k] : observation_.right[k];
+    *residual = JunctionLineResidual::Distance(intrinsics_, Lines<T>()[side < 0 ? 0 : 1], p.x(),
+                                               p.y());
     const std::vector<double>& weights =
-        side < 0 ? observation.left_weights : observation.right_weights;
+        side < 0 ? observation_.left_weights : observation_.right_weights;
     if (!weights.empty()) *residual *= std::sqrt(weights[k]);
     return true;
   }
+
+ private:
+  template <typename T>
+  bool PrepareInto(const T* x, Vec3<T>* out) const {
+    return JunctionLineResidual::ScaledLine(intrinsics_, x, -1, &out[0]) &&
+           JunctionLineResidual::ScaledLine(intrinsics_, x, 1, &out[1]);
+  }
+  template <typename T>
+  const Vec3<T>* Lines() const {
+    if constexpr (std::is_same_v<T, double>) {
+      return lines_;
+    } else {
+      return jet_lines_;
+    }
+  }
+
+  const CorridorObservation& observation_;
+  const FloorIntrinsics intrinsics_;
+  mutable Vec3<double> lines_[2] = {};  // Prepare's, at the x of the residuals that follow.
+  mutable Vec3<Jet> jet_lines_[2] = {};
 };
 
 // Each side's points within trim_sigmas robust standard deviations of the lines of x (at least
@@ -53,12 +81,12 @@ bool TrimToFit(const CorridorObservation& all, const FloorIntrinsics& intrinsics
   kept->right_weights.clear();
   for (int side = -1; side <= 1; side += 2) {
     const std::vector<Eigen::Vector2d>& points = side < 0 ? all.left : all.right;
+    Vec3<double> line;
+    if (!JunctionLineResidual::ScaledLine(intrinsics, x, side, &line)) return false;
     distance.clear();
     for (const auto& p : points) {
-      double r = 0;
-      if (!JunctionLineResidual(intrinsics, p.x(), p.y(), side)(x, &r) || !std::isfinite(r)) {
-        return false;
-      }
+      const double r = JunctionLineResidual::Distance(intrinsics, line, p.x(), p.y());
+      if (!std::isfinite(r)) return false;
       distance.push_back(std::abs(r) * std::sqrt(all.Weight(side, distance.size())));
     }
     sorted.assign(distance.begin(), distance.end());
@@ -115,7 +143,7 @@ Status JointSolver::Solve(const CorridorObservation& observation, const Corridor
   const FloorIntrinsics intrinsics{observation.fx, observation.fy, observation.cx, observation.cy,
                                    observation.camera_height};
   BoundedLmSummary lm_summary =
-      SolveBoundedLm<4>(JunctionResiduals{observation, intrinsics}, lm_options, lower, upper, x);
+      SolveBoundedLm<4>(JunctionResiduals(observation, intrinsics), lm_options, lower, upper, x);
   summary->evaluations = lm_summary.residual_evaluations;
   summary->iterations = lm_summary.iterations;
   // Trimming: refit on the points near the fit's lines, which are chosen again from all points at
@@ -143,7 +171,7 @@ Status JointSolver::Solve(const CorridorObservation& observation, const Corridor
     kept.camera_height = observation.camera_height;
     double refit[4] = {x[0], x[1], x[2], x[3]};
     const BoundedLmSummary trimmed =
-        SolveBoundedLm<4>(JunctionResiduals{kept, intrinsics}, lm_options, lower, upper, refit);
+        SolveBoundedLm<4>(JunctionResiduals(kept, intrinsics), lm_options, lower, upper, refit);
     summary->evaluations += trimmed.residual_evaluations;
     summary->iterations += trimmed.iterations;
     if (trimmed.termination == BoundedLmSummary::Termination::kFailure) break;

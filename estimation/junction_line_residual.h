@@ -24,19 +24,36 @@ class JunctionLineResidual {
 
   template <typename T>
   bool operator()(const T* x, T* residual) const {
+    Vec3<T> line;
+    if (!ScaledLine(intrinsics_, x, side_, &line)) return false;
+    *residual = Distance(intrinsics_, line, u_, v_);
+    return true;
+  }
+
+  // The side's junction at x as the plane normal N scaled by 1 / |(N_x / fx, N_y / fy)|, so that
+  // Distance is in pixels. It depends on x alone: a solver over many points computes it once per
+  // x (JointSolver). False when the line is at infinity.
+  template <typename T>
+  static bool ScaledLine(const FloorIntrinsics& intrinsics, const T* x, int side, Vec3<T>* line) {
     const CorridorRotation<T> rotation(x[1], x[0]);
     const Vec3<T> m = rotation.WallNormal(), n = rotation.FloorNormal();
-    const T wall_x = T(0.5 * side_) * x[3] - x[2];
-    const T h(intrinsics_.height);
+    const T wall_x = T(0.5 * side) * x[3] - x[2];
+    const T h(intrinsics.height);
     const Vec3<T> normal{h * m.x - wall_x * n.x, h * m.y - wall_x * n.y, h * m.z - wall_x * n.z};
-    const Vec3<T> ray{T((u_ - intrinsics_.cx) / intrinsics_.fx),
-                      T((v_ - intrinsics_.cy) / intrinsics_.fy), T(1.0)};
-    const T a = normal.x / T(intrinsics_.fx), b = normal.y / T(intrinsics_.fy);
+    const T a = normal.x / T(intrinsics.fx), b = normal.y / T(intrinsics.fy);
     const T norm_sq = a * a + b * b;
     if (!(norm_sq > T(1e-30))) return false;
     using std::sqrt;
-    residual[0] = Dot(normal, ray) / sqrt(norm_sq);
+    const T scale = T(1.0) / sqrt(norm_sq);
+    *line = Vec3<T>{normal.x * scale, normal.y * scale, normal.z * scale};
     return true;
+  }
+
+  // The signed pixel distance of (u, v) from a ScaledLine.
+  template <typename T>
+  static T Distance(const FloorIntrinsics& intrinsics, const Vec3<T>& line, double u, double v) {
+    return line.x * ((u - intrinsics.cx) / intrinsics.fx) +
+           line.y * ((v - intrinsics.cy) / intrinsics.fy) + line.z;
   }
 
   static ceres::CostFunction* Create(const FloorIntrinsics& intrinsics, double u, double v,
