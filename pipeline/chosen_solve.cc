@@ -27,7 +27,10 @@ Status ChosenSolve(const CorridorSolver& solver, const RecoverDepthOptions& opti
   SolverSummary solved;
   Status status = solver.Solve(observation, nullptr, &solved);
   if (!status.ok()) {
-    return Status::NoCorridorFound("the " + options.solver + " solver: " + status.message());
+    // Lines no solver can use are no corridor; a solver's own failure keeps its code.
+    const std::string why = "the " + options.solver + " solver: " + status.message();
+    return status.code() == StatusCode::kInvalidArgument ? Status::NoCorridorFound(why)
+                                                         : Status(status.code(), why);
   }
   CorridorGeometry estimate = solved.estimate;
   estimate.camera_height = geometry->camera_height;
