@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <cstring>
 
 #include <opencv2/core.hpp>
 
@@ -438,7 +439,8 @@ CORRIDOR_ALWAYS_INLINE inline void HoughBody(const cv::Mat& edges, const cv::Mat
   cv::Mat& state = scratch.state;
   cv::Mat& bins = scratch.bins;
   state.create(height, width, CV_8U);
-  state.setTo(cv::Scalar(kNone));
+  // Row by row: cv::Mat::setTo allocates its scalar's buffer.
+  for (int v = 0; v < height; ++v) std::memset(state.ptr<uchar>(v), kNone, width);
   bins.create(height, width, CV_8U);
   std::vector<cv::Point>& pool = scratch.pool;
   pool.clear();
