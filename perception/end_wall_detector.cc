@@ -194,9 +194,14 @@ Status DetectEndWall(const cv::Mat& full_bgr, const Camera& full_camera, const C
   // first halving reuses the blurred rows that came with the shared edges of this image.
   const bool has_blurred = shared != nullptr && shared->image_rows == full_bgr.rows &&
                            shared->smooth.cols == full_bgr.cols;
-  const WorkingImage work = HalveToWidth(full_bgr, full_camera, o.max_work_width,
-                                         has_blurred ? &shared->smooth : nullptr);
-  const cv::Mat& bgr = work.bgr;
+  // In the thread's buffer, whose halving keeps its memory from call to call (the image itself,
+  // when not halved, is not the buffer's to hold).
+  thread_local WorkingImage thread_work;
+  WorkingImage& work = thread_work;
+  HalveToWidth(full_bgr, full_camera, o.max_work_width, has_blurred ? &shared->smooth : nullptr,
+               &work);
+  if (work.scale == 1) work.bgr.release();
+  const cv::Mat& bgr = work.scale == 1 ? full_bgr : work.bgr;
   const Camera& camera = work.camera;
   // Edges of the colour gradient: a dark baseboard on a dark floor has no grey edge.
   ImageEdges own;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
+#include <utility>
 #include <vector>
 
 #ifdef __x86_64__
@@ -14,6 +15,7 @@
 #include "core/cpu_features.h"
 #include "kernels/binomial_rows.h"
 #include "kernels/image_border.h"
+#include "kernels/mat_memory.h"
 
 namespace corridor {
 namespace {
@@ -51,7 +53,11 @@ __attribute__((target("avx2"))) void PyrDownAvx2(const cv::Mat& src, const cv::M
   constexpr int C = kChannels;
   const int width = src.cols, height = src.rows;
   const int out_width = (width + 1) / 2, out_height = (height + 1) / 2;
-  cv::Mat out(out_height, out_width, src.type());
+  // Into *dst's memory, as cv::pyrDown, unless it holds the source's pixels (`src` may be *dst).
+  const cv::Mat source = src;
+  if (dst->datastart == source.datastart) *dst = cv::Mat();
+  dst->create(out_height, out_width, source.type());
+  cv::Mat& out = *dst;
   // Two reflected pixels on each side of the vertical sums; four bytes of slack for the copy.
   // The thread's, reused from call to call.
   thread_local std::vector<uint16_t> thread_vertical;
@@ -68,17 +74,16 @@ __attribute__((target("avx2"))) void PyrDownAvx2(const cv::Mat& src, const cv::M
     EverySecondPixel<C>(blurred->ptr<uint8_t>(2 * y), out_width, out.ptr<uint8_t>(y));
   }
   for (int y = from_blurred; y < out_height; ++y) {
-    const uint8_t* r0 = src.ptr<uint8_t>(Reflect101(2 * y - 2, height));
-    const uint8_t* r1 = src.ptr<uint8_t>(Reflect101(2 * y - 1, height));
-    const uint8_t* r2 = src.ptr<uint8_t>(2 * y);
-    const uint8_t* r3 = src.ptr<uint8_t>(Reflect101(2 * y + 1, height));
-    const uint8_t* r4 = src.ptr<uint8_t>(Reflect101(2 * y + 2, height));
+    const uint8_t* r0 = source.ptr<uint8_t>(Reflect101(2 * y - 2, height));
+    const uint8_t* r1 = source.ptr<uint8_t>(Reflect101(2 * y - 1, height));
+    const uint8_t* r2 = source.ptr<uint8_t>(2 * y);
+    const uint8_t* r3 = source.ptr<uint8_t>(Reflect101(2 * y + 1, height));
+    const uint8_t* r4 = source.ptr<uint8_t>(Reflect101(2 * y + 2, height));
     binomial::ColumnSums5Avx2(r0, r1, r2, r3, r4, n, v);
     binomial::ReflectEnds<C>(v, width, 2);
     binomial::RowSums5Avx2<C>(v, n, h);
     EverySecondPixel<C>(h, out_width, out.ptr<uint8_t>(y));
   }
-  *dst = out;
 }
 #endif
 
@@ -114,10 +119,26 @@ int WorkingScale(int width, int max_width) {
 
 WorkingImage HalveToWidth(const cv::Mat& bgr, const Camera& camera, int max_width,
                           const cv::Mat* blurred) {
-  WorkingImage work{bgr, camera, 1};
-  const int scale = WorkingScale(bgr.cols, max_width);
+  WorkingImage work;
+  HalveToWidth(bgr, camera, max_width, blurred, &work);
+  return work;
+}
+
+void HalveToWidth(const cv::Mat& bgr, const Camera& camera, int max_width,
+                  const cv::Mat* blurred, WorkingImage* out) {
+  const cv::Mat image = bgr;             // `bgr` may be out->bgr.
+  cv::Mat memory = std::move(out->bgr);  // For the first halving.
+  ReleaseUnlessSole(&memory);
+  WorkingImage& work = *out;
+  work = WorkingImage{image, camera, 1};
+  const int scale = WorkingScale(image.cols, max_width);
   while (work.scale < scale && work.bgr.rows > 1) {
-    PyrDown(work.bgr, &work.bgr, work.scale == 1 ? blurred : nullptr);
+    if (work.scale == 1) {
+      PyrDown(image, &memory, blurred);
+      work.bgr = std::move(memory);
+    } else {
+      PyrDown(work.bgr, &work.bgr);
+    }
     work.scale *= 2;
     Camera& c = work.camera;
     c.image_width = work.bgr.cols;
@@ -127,7 +148,6 @@ WorkingImage HalveToWidth(const cv::Mat& bgr, const Camera& camera, int max_widt
     c.cx *= 0.5;
     c.cy *= 0.5;
   }
-  return work;
 }
 
 }  // namespace corridor

@@ -33,5 +33,9 @@ int WorkingScale(int width, int max_width);
 // `blurred`: as PyrDown's, for the first halving.
 WorkingImage HalveToWidth(const cv::Mat& bgr, const Camera& camera, int max_width,
                           const cv::Mat* blurred = nullptr);
+// The same into *out, whose matrix keeps its memory for the first halving when nothing else
+// holds it.
+void HalveToWidth(const cv::Mat& bgr, const Camera& camera, int max_width, const cv::Mat* blurred,
+                  WorkingImage* out);
 
 }  // namespace corridor
