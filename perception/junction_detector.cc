@@ -13,6 +13,7 @@
 #include "perception/floor_band.h"
 #include "perception/floor_texture.h"
 #include "perception/junction_candidates.h"
+#include "perception/junction_memory.h"
 #include "perception/junction_refit.h"
 #include "perception/junction_search_region.h"
 #include "perception/junction_selector.h"
@@ -228,11 +229,12 @@ int SearchTop(const JunctionDetectorOptions& options, int height) {
                     height - kMinImageSide / 2);
 }
 
-// Stage: Canny edges and Hough segments of the search region; the segments in image pixels.
-EdgeSegments FindEdgeSegments(const JunctionSearchRegion& region, const SegmentOptions& options) {
-  EdgeSegments found = DetectSegments(region.work, region.work_roi_top, options);
-  SegmentsToImage(region, &found.segments);
-  return found;
+// Stage: Canny edges and Hough segments of the search region into *found (which keeps its
+// memory); the segments in image pixels.
+void FindEdgeSegments(const JunctionSearchRegion& region, const SegmentOptions& options,
+                      EdgeSegments* found) {
+  DetectSegments(region.work, region.work_roi_top, options, found);
+  SegmentsToImage(region, &found->segments);
 }
 
 // Stage: more edges than max_edge_density of the search region are noise or texture, not a
@@ -453,7 +455,13 @@ Status DetectJunctionsIn(const cv::Mat& bgr, const cv::Mat* halved,
                                     options.max_work_width, &region);
   if (!status.ok()) return status;
   const SegmentOptions segment_options = JunctionSegmentOptions(options, height, region.scale);
-  EdgeSegments found = FindEdgeSegments(region, segment_options);
+  // The edges in the thread's buffer, whose matrices keep their memory from frame to frame
+  // (nothing holds them past the search); the segments in a spare result's (junction_memory.h),
+  // for the result takes them.
+  thread_local EdgeSegments thread_found;
+  EdgeSegments& found = thread_found;
+  if (found.segments.capacity() == 0) found.segments = SpareSegments();
+  FindEdgeSegments(region, segment_options, &found);
   if (NoiseOrTexture(found.edges, options, &why)) return NoCorridor(result, why);
   // The candidates and the best pair of them, in the thread's buffer, whose vectors keep their
   // memory from frame to frame.

@@ -7,6 +7,7 @@
 #include <Eigen/Geometry>
 
 #include "perception/junction_detector.h"
+#include "perception/junction_memory.h"
 #include "perception/robust_line_fit.h"
 
 namespace corridor {
@@ -67,12 +68,13 @@ JunctionLine RefineJunction(const JunctionCandidate& candidate,
   JunctionLine out;
   Eigen::Vector3d line = candidate.line.line;
   // The side's pixels, the last fit's and the support's positions along the line in the thread's
-  // scratch, which keeps its memory from call to call; `support` becomes the result's.
+  // scratch, which keeps its memory from call to call; `support` becomes the result's (a spare
+  // result's memory, junction_memory.h).
   thread_local RefineScratch thread_scratch;
   RefineScratch& scratch = thread_scratch;
   std::vector<Eigen::Vector2d>& side = scratch.side;
   FloorSidePixels(edges, vp, left, &side);
-  std::vector<Eigen::Vector2d> support;
+  std::vector<Eigen::Vector2d> support = SpareSupport();
   std::vector<Eigen::Vector2d>& fitted = scratch.fitted;  // The pixels `line` was fitted to.
   fitted.clear();
   bool final_support = false;  // True once `support` is the final (distance, line) support.

@@ -11,6 +11,7 @@
 #include "kernels/binomial_blur.h"
 #include "kernels/canny_edges.h"
 #include "kernels/color_gradient.h"
+#include "kernels/mat_memory.h"
 #include "kernels/oriented_hough.h"
 
 namespace corridor {
@@ -56,15 +57,25 @@ void SetExtentAlongLine(const Eigen::Vector2d* points, size_t count, MergedLine*
 
 EdgeSegments DetectSegments(const cv::Mat& image, int roi_top, const SegmentOptions& options) {
   EdgeSegments out;
-  out.roi_top = roi_top;
+  DetectSegments(image, roi_top, options, &out);
+  return out;
+}
+
+void DetectSegments(const cv::Mat& image, int roi_top, const SegmentOptions& options,
+                    EdgeSegments* out) {
+  out->roi_top = roi_top;
   const cv::Mat roi = image.rowRange(roi_top, image.rows);
-  cv::Mat smooth;
+  // The blurred rows in the thread's matrix, which keeps its memory from call to call.
+  thread_local cv::Mat thread_smooth;
+  const cv::Mat* smooth = &roi;
   if (options.blur_sigma > 0) {
-    GaussianBlurView(roi, options.blur_sigma, &smooth);
-  } else {
-    smooth = roi;
+    ReleaseUnlessSole(&thread_smooth);
+    GaussianBlurView(roi, options.blur_sigma, &thread_smooth);
+    smooth = &thread_smooth;
   }
-  cv::Mat dx, dy;
+  ReleaseUnlessSole(&out->dx);
+  ReleaseUnlessSole(&out->dy);
+  ReleaseUnlessSole(&out->edges);
   thread_local std::vector<int> thread_histogram;  // Keeps its memory from call to call.
   std::vector<int>& histogram = thread_histogram;
   const bool automatic = !(options.canny_high > 0);
@@ -73,26 +84,31 @@ EdgeSegments DetectSegments(const cv::Mat& image, int roi_top, const SegmentOpti
       automatic && options.auto_min > 0 && options.auto_min <= kGradientBins
           ? static_cast<int>(std::ceil(options.auto_min))
           : 0;
-  ColorGradient(smooth, &dx, &dy, automatic ? &histogram : nullptr, histogram_floor);
+  ColorGradient(*smooth, &out->dx, &out->dy, automatic ? &histogram : nullptr, histogram_floor);
   const double high =
       automatic ? std::max(options.auto_min,
-                           HistogramPercentile(histogram, static_cast<double>(dx.total()),
+                           HistogramPercentile(histogram, static_cast<double>(out->dx.total()),
                                                options.auto_percentile))
                 : options.canny_high;
-  out.canny_high = high;
-  CannyFromGradients(dx, dy, options.canny_low_ratio * high, high, false, &out.edges);
-  out.dx = dx;
-  out.dy = dy;
-  out.segments = HoughSegments(out, options);
-  return out;
+  out->canny_high = high;
+  CannyFromGradients(out->dx, out->dy, options.canny_low_ratio * high, high, false, &out->edges);
+  HoughSegments(*out, options, &out->segments);
 }
 
 std::vector<cv::Vec4f> HoughSegments(const EdgeSegments& found, const SegmentOptions& options) {
+  std::vector<cv::Vec4f> segments;
+  HoughSegments(found, options, &segments);
+  return segments;
+}
+
+void HoughSegments(const EdgeSegments& found, const SegmentOptions& options,
+                   std::vector<cv::Vec4f>* segments) {
+  segments->clear();
   // The thread's, keeping its memory from call to call (the transforms clear it first).
   thread_local std::vector<cv::Vec4i> thread_lines;
   std::vector<cv::Vec4i>& lines = thread_lines;
   lines.clear();
-  if (found.edges.empty()) return {};
+  if (found.edges.empty()) return;
   if (options.hough_angle_window_deg > 0) {
     OrientedHoughOptions hough;
     hough.threshold = options.hough_threshold;
@@ -104,13 +120,11 @@ std::vector<cv::Vec4f> HoughSegments(const EdgeSegments& found, const SegmentOpt
     cv::HoughLinesP(found.edges, lines, 1.0, CV_PI / 180.0, options.hough_threshold,
                     options.hough_min_length, options.hough_max_gap);
   }
-  std::vector<cv::Vec4f> segments;
-  segments.reserve(lines.size());
+  segments->reserve(lines.size());
   for (const auto& l : lines) {
-    segments.emplace_back(static_cast<float>(l[0]), static_cast<float>(l[1] + found.roi_top),
-                          static_cast<float>(l[2]), static_cast<float>(l[3] + found.roi_top));
+    segments->emplace_back(static_cast<float>(l[0]), static_cast<float>(l[1] + found.roi_top),
+                           static_cast<float>(l[2]), static_cast<float>(l[3] + found.roi_top));
   }
-  return segments;
 }
 
 Eigen::Vector2d LowEnd(const MergedLine& line) {

@@ -48,11 +48,18 @@ struct SegmentOptions {
 
 // Canny (on colour gradients for a BGR image) + probabilistic Hough on the rows [roi_top, rows).
 EdgeSegments DetectSegments(const cv::Mat& image, int roi_top, const SegmentOptions& options);
+// The same into *out, whose segment vector keeps its memory, and so do its matrices when nothing
+// else holds them.
+void DetectSegments(const cv::Mat& image, int roi_top, const SegmentOptions& options,
+                    EdgeSegments* out);
 
 // The Hough step of DetectSegments alone, on `found`'s edges and gradients with the Hough settings
 // of `options` (threshold, shortest segment, gap, angle window): segments in the coordinates of
 // found.segments. A second look at the same edges with other settings costs no edge detection.
 std::vector<cv::Vec4f> HoughSegments(const EdgeSegments& found, const SegmentOptions& options);
+// The same into *segments, which keeps its memory.
+void HoughSegments(const EdgeSegments& found, const SegmentOptions& options,
+                   std::vector<cv::Vec4f>* segments);
 
 // Groups segments whose lines agree within the tolerances and fits one line per group
 // (length-weighted total least squares of their endpoints).

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "kernels/mat_memory.h"
 #include "pipeline/ceiling_agreement.h"
 #include "pipeline/ceiling_split.h"
 #include "pipeline/chosen_solve.h"
@@ -17,6 +18,7 @@
 #include "pipeline/wall_checks.h"
 #include "perception/end_wall_detector.h"
 #include "perception/junction_detector.h"
+#include "perception/junction_memory.h"
 #include "perception/junction_tracker.h"
 #include "pipeline/frame_confidence.h"
 
@@ -103,12 +105,19 @@ Status DepthRecoverer::Detect(const cv::Mat& image, const Camera& camera,
                               RecoverDepthResult* result, JunctionTrack* track) const {
   const auto start = Clock::now();
   // The previous frame's handover is used again when nothing else holds it (it was made here,
-  // not const): one allocation less a frame.
+  // not const): one allocation less a frame. So is the memory of its halving, of its depth
+  // (handed on to Reconstruct) and of its junctions' vectors (junction_memory.h).
   std::shared_ptr<FrameHandover> handover;
+  cv::Mat depth_memory = std::move(result->depth);
+  WorkingImage halved;
   if (result->handover != nullptr && result->handover.use_count() == 1) {
     handover = std::const_pointer_cast<FrameHandover>(std::move(result->handover));
+    halved.bgr = std::move(handover->search.bgr);
+    if (depth_memory.empty()) depth_memory = std::move(handover->depth_memory);
     *handover = FrameHandover();
   }
+  ReleaseUnlessSole(&depth_memory);
+  RecycleJunctionMemory(&result->junctions);
   *result = RecoverDepthResult();
   const auto finish = [&](Status status) {
     result->status = status;
@@ -123,6 +132,7 @@ Status DepthRecoverer::Detect(const cv::Mat& image, const Camera& camera,
   if (!status.ok()) return finish(status);
   if (handover == nullptr) handover = std::make_shared<FrameHandover>();
   handover->image = bgr;
+  handover->depth_memory = std::move(depth_memory);
   result->handover = handover;
   result->camera = camera;
   // In a sequence, the junctions near the previous frame's; they stand for the frame when the
@@ -144,7 +154,7 @@ Status DepthRecoverer::Detect(const cv::Mat& image, const Camera& camera,
   const int junction_scale = WorkingScale(bgr.cols, options_.perception.max_work_width);
   const int search_scale = WorkingScale(bgr.cols, options_.search_max_width);
   if (junction_scale > 1 && search_scale >= junction_scale) {
-    const WorkingImage halved = HalveToWidth(bgr, camera, options_.perception.max_work_width);
+    HalveToWidth(bgr, camera, options_.perception.max_work_width, nullptr, &halved);
     status = DetectJunctions(bgr, halved.bgr, options_.perception, &result->junctions);
     handover->search = search_scale == junction_scale
                            ? halved
@@ -372,7 +382,15 @@ Status DepthRecoverer::ReconstructAsSeen(const Camera& camera, RecoverDepthResul
   result->has_geometry = true;
 
   stage = Clock::now();
+  // Into the previous frame's depth memory (Detect's), when the handover is this result's alone;
+  // a refusal before the rasteriser wrote into it leaves no depth, as without it.
+  if (result->handover != nullptr && result->handover.use_count() == 1) {
+    FrameHandover& own = *std::const_pointer_cast<FrameHandover>(result->handover);
+    result->depth = std::move(own.depth_memory);
+  }
+  const uchar* const given = result->depth.datastart;
   status = rasterizer_->Render(geometry, camera, &result->depth);
+  if (!status.ok() && given != nullptr && result->depth.datastart == given) result->depth.release();
   if (status.ok()) MarkNoEstimateNaN(&result->depth);
   result->times.rasterize = SecondsSince(stage);
   return finish(status);
