@@ -8,6 +8,7 @@
 #include <Eigen/Geometry>
 
 #include "perception/line_edge_points.h"
+#include "perception/junction_memory.h"
 
 namespace corridor {
 
@@ -40,7 +41,9 @@ void MeasureJunctionEdgePoints(const cv::Mat& bgr, const JunctionEdgePointOption
   const int majors = by_rows ? bgr.rows : bgr.cols;
   // The rows (columns) with a support pixel, and their neighbours: a support found at a coarser
   // step (a refit at full resolution every other row) covers the rows between.
-  std::vector<char> wanted(static_cast<size_t>(majors), 0);
+  thread_local std::vector<char> thread_wanted;
+  std::vector<char>& wanted = thread_wanted;
+  wanted.assign(static_cast<size_t>(majors), 0);
   double t0 = 1e300, t1 = -1e300;
   for (const Eigen::Vector2d& p : junction->support) {
     const int k = static_cast<int>(std::lround(by_rows ? p.y() : p.x()));
@@ -62,6 +65,9 @@ void MeasureJunctionEdgePoints(const cv::Mat& bgr, const JunctionEdgePointOption
   std::vector<EdgePeak>& peaks = thread_peaks;
   peaks.clear();
   EdgePeaksAlong(bgr, line, t0 - pad, t1 + pad, search, &peaks);
+  // The result's vectors, with a spare's memory (junction_memory.h) when they have none.
+  if (junction->edge_points.capacity() == 0) junction->edge_points = SpareEdgePoints();
+  if (junction->edge_weights.capacity() == 0) junction->edge_weights = SpareEdgeWeights();
   std::vector<double>& weights = junction->edge_weights;
   for (const EdgePeak& peak : peaks) {
     if (peak.major < 0 || peak.major >= majors || !wanted[peak.major]) continue;
@@ -74,7 +80,9 @@ void MeasureJunctionEdgePoints(const cv::Mat& bgr, const JunctionEdgePointOption
     weights.clear();
     return;
   }
-  std::vector<double> sorted = weights;
+  thread_local std::vector<double> thread_sorted;
+  std::vector<double>& sorted = thread_sorted;
+  sorted.assign(weights.begin(), weights.end());
   std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
   const double median = std::max(sorted[sorted.size() / 2], 1e-9);
   double sum = 0;

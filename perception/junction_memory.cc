@@ -5,12 +5,30 @@
 namespace corridor {
 namespace {
 
-// A search fills at most five lines' support (left, right, their lower lines, or the single).
+// A search fills at most five lines (left, right, their lower lines, or the single).
 constexpr int kLines = 5;
 
+// Spare vectors of one kind: [0, count) are spare.
+template <typename T>
+struct Spares {
+  std::vector<T> vectors[kLines];
+  int count = 0;
+
+  void Give(std::vector<T>* v) {
+    if (v->capacity() > 0 && count < kLines) vectors[count++] = std::move(*v);
+    *v = {};
+  }
+  std::vector<T> Take() {
+    if (count == 0) return {};
+    std::vector<T> v = std::move(vectors[--count]);
+    v.clear();
+    return v;
+  }
+};
+
 struct JunctionMemory {
-  std::vector<Eigen::Vector2d> support[kLines];  // [0, supports) are spare.
-  int supports = 0;
+  Spares<Eigen::Vector2d> support, edge_points;
+  Spares<double> edge_weights;
   std::vector<cv::Vec4f> segments;
 };
 
@@ -25,11 +43,9 @@ void RecycleJunctionMemory(JunctionPair* junctions) {
   JunctionMemory& memory = ThreadMemory();
   for (JunctionLine* line : {&junctions->left, &junctions->right, &junctions->left_lower,
                              &junctions->right_lower, &junctions->single}) {
-    if (line->support.capacity() == 0) continue;
-    if (memory.supports < kLines) {
-      memory.support[memory.supports++] = std::move(line->support);
-    }
-    line->support = {};
+    memory.support.Give(&line->support);
+    memory.edge_points.Give(&line->edge_points);
+    memory.edge_weights.Give(&line->edge_weights);
   }
   if (junctions->segments.capacity() > memory.segments.capacity()) {
     memory.segments = std::move(junctions->segments);
@@ -37,13 +53,11 @@ void RecycleJunctionMemory(JunctionPair* junctions) {
   junctions->segments = {};
 }
 
-std::vector<Eigen::Vector2d> SpareSupport() {
-  JunctionMemory& memory = ThreadMemory();
-  if (memory.supports == 0) return {};
-  std::vector<Eigen::Vector2d> support = std::move(memory.support[--memory.supports]);
-  support.clear();
-  return support;
-}
+std::vector<Eigen::Vector2d> SpareSupport() { return ThreadMemory().support.Take(); }
+
+std::vector<Eigen::Vector2d> SpareEdgePoints() { return ThreadMemory().edge_points.Take(); }
+
+std::vector<double> SpareEdgeWeights() { return ThreadMemory().edge_weights.Take(); }
 
 std::vector<cv::Vec4f> SpareSegments() {
   std::vector<cv::Vec4f> segments = std::move(ThreadMemory().segments);

@@ -67,8 +67,12 @@ int EdgePeaksAlong(const cv::Mat& bgr, const Eigen::Vector3d& line, double t0, d
                                                             by_rows ? b.y() : b.x())));
   const int major_size = by_rows ? bgr.rows : bgr.cols, minor_size = by_rows ? bgr.cols : bgr.rows;
   const int reach = static_cast<int>(std::ceil(search.reach_px));
-  std::vector<double> m(2 * reach + 3);
-  std::vector<int> smooth, step;
+  // The thread's buffers, which keep their memory from call to call.
+  thread_local std::vector<double> thread_m;
+  thread_local std::vector<int> thread_smooth, thread_step;
+  std::vector<double>& m = thread_m;
+  std::vector<int>&smooth = thread_smooth, &step = thread_step;
+  m.assign(2 * reach + 3, 0.0);
   const int stride = std::max(1, search.step_px);
   int searched = 0;
   for (int k = std::max(1, major_lo); k <= std::min(major_size - 2, major_hi); k += stride) {

@@ -315,7 +315,7 @@ Status DepthRecoverer::ReconstructAsSeen(const Camera& camera, RecoverDepthResul
           FrameInDoubt(own_confidence, options_.min_confidence, disagreement,
                        std::log(kCeilingSidesAgree), result->junctions_tracked);
       HoldWidth(*hold_from, options_.max_width_change, doubted, &geometry, result);
-      if (search_ceiling) {  // The ceiling of the held walls.
+      if (search_ceiling && result->width_held) {  // The ceiling of the held walls.
         status = SearchCeiling(checks, &geometry, &result->ceiling);
         if (!status.ok()) return finish(status);
       }

@@ -125,7 +125,10 @@ TEST(ChosenSolveTest, TheLayoutIsJointOnLines) {
   EXPECT_EQ(layout.solver, "joint");
   EXPECT_EQ(layout.solver_evidence, "lines");
   EXPECT_TRUE(ChosenSolveDiffers(options));
-  EXPECT_FALSE(ChosenSolveDiffers(RecoverDepthOptions()));
+  EXPECT_TRUE(ChosenSolveDiffers(RecoverDepthOptions()));  // Edge points by default.
+  RecoverDepthOptions lines;
+  lines.solver_evidence = "lines";
+  EXPECT_FALSE(ChosenSolveDiffers(lines));
 }
 
 }  // namespace
