@@ -125,10 +125,7 @@ TEST(ChosenSolveTest, TheLayoutIsJointOnLines) {
   EXPECT_EQ(layout.solver, "joint");
   EXPECT_EQ(layout.solver_evidence, "lines");
   EXPECT_TRUE(ChosenSolveDiffers(options));
-  EXPECT_TRUE(ChosenSolveDiffers(RecoverDepthOptions()));  // Edge points by default.
-  RecoverDepthOptions lines;
-  lines.solver_evidence = "lines";
-  EXPECT_FALSE(ChosenSolveDiffers(lines));
+  EXPECT_FALSE(ChosenSolveDiffers(RecoverDepthOptions()));  // joint on lines by default.
 }
 
 }  // namespace
