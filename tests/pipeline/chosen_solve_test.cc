@@ -17,15 +17,21 @@ namespace {
 
 Camera TestCamera() { return Camera::FromHorizontalFov(640, 480, 80.0 * M_PI / 180, 0.7); }
 
-TEST(ChosenSolveTest, EverySolverSeesOneLayoutAndReportsItsOwnEstimate) {
-  const Camera camera = TestCamera();
+// The test corridor, rendered, and its recovery with the default options into *result.
+synth::Frame DefaultRecovery(const Camera& camera, RecoverDepthResult* result) {
   const synth::Frame frame = testing_util::RenderCorridorFrame(
       camera, 2.2, 2.8, 5, synth::CameraPose{0.06, 0.04, 0.25, 0.7, 3.0});
-  ASSERT_FALSE(frame.bgr.empty());
-  RecoverDepthOptions layout_options;
+  EXPECT_FALSE(frame.bgr.empty());
+  EXPECT_TRUE(RecoverDepth(frame.bgr, camera, RecoverDepthOptions(), result).ok())
+      << result->status.ToString();
+  return frame;
+}
+
+TEST(ChosenSolveTest, EverySolverSeesOneLayoutAndReportsItsOwnEstimate) {
+  const Camera camera = TestCamera();
   RecoverDepthResult layout;
-  ASSERT_TRUE(RecoverDepth(frame.bgr, camera, layout_options, &layout).ok())
-      << layout.status.ToString();
+  const synth::Frame frame = DefaultRecovery(camera, &layout);
+  ASSERT_TRUE(layout.status.ok());
   for (const std::string evidence : {"lines", "edges"}) {
     CorridorGeometry joint;
     for (const std::string solver : {"joint", "grid", "closed_form+lm"}) {
@@ -85,12 +91,10 @@ class FixedSolver : public CorridorSolver {
 
 TEST(ChosenSolveTest, AnImplausibleEstimateIsRefusedAndChangesNothing) {
   const Camera camera = TestCamera();
-  const synth::Frame frame = testing_util::RenderCorridorFrame(
-      camera, 2.2, 2.8, 5, synth::CameraPose{0.06, 0.04, 0.25, 0.7, 3.0});
-  ASSERT_FALSE(frame.bgr.empty());
-  RecoverDepthOptions options;
   RecoverDepthResult result;
-  ASSERT_TRUE(RecoverDepth(frame.bgr, camera, options, &result).ok());
+  DefaultRecovery(camera, &result);
+  ASSERT_TRUE(result.status.ok());
+  const RecoverDepthOptions options;
   const CorridorGeometry before = result.geometry;
   CorridorGeometry implausible = before;
   implausible.offset = before.width;  // The camera outside the walls.
