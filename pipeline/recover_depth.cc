@@ -35,10 +35,12 @@ double SecondsSince(Clock::time_point start) {
 
 DepthRecoverer::DepthRecoverer(const RecoverDepthOptions& options,
                                std::unique_ptr<CorridorSolver> solver,
+                               std::unique_ptr<CorridorSolver> layout_solver,
                                std::unique_ptr<DepthRasterizer> rasterizer)
     : options_(options),
       solver_(std::move(solver)),
       layout_options_(LayoutOptions(options)),
+      layout_solver_(std::move(layout_solver)),
       rasterizer_(std::move(rasterizer)) {}
 
 Status DepthRecoverer::Create(const RecoverDepthOptions& options,
@@ -55,8 +57,8 @@ Status DepthRecoverer::Create(const RecoverDepthOptions& options,
   std::unique_ptr<CorridorSolver> layout_solver;
   status = CreateSolver(LayoutSolverName(), options.solver_options, &layout_solver);
   if (!status.ok()) return status;
-  recoverer->reset(new DepthRecoverer(options, std::move(solver), std::move(rasterizer)));
-  (*recoverer)->layout_solver_ = std::move(layout_solver);
+  recoverer->reset(new DepthRecoverer(options, std::move(solver), std::move(layout_solver),
+                                      std::move(rasterizer)));
   if (options.level_roll) {
     RecoverDepthOptions level = options;
     level.level_roll = false;

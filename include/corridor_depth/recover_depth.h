@@ -147,6 +147,7 @@ class DepthRecoverer {
 
  private:
   DepthRecoverer(const RecoverDepthOptions& options, std::unique_ptr<CorridorSolver> solver,
+                 std::unique_ptr<CorridorSolver> layout_solver,
                  std::unique_ptr<DepthRasterizer> rasterizer);
 
   // Reconstruct without the roll's levelling.
@@ -158,7 +159,7 @@ class DepthRecoverer {
   // The layout's options and solver (pipeline/chosen_solve.h): the wall checks decide with them,
   // and solver_ estimates the final geometry from the junctions they leave.
   const RecoverDepthOptions layout_options_;
-  std::unique_ptr<CorridorSolver> layout_solver_;
+  const std::unique_ptr<CorridorSolver> layout_solver_;
   const std::unique_ptr<DepthRasterizer> rasterizer_;
   // With level_roll: the same options without it, which recovers a frame turned level.
   std::unique_ptr<DepthRecoverer> level_;
