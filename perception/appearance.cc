@@ -189,6 +189,34 @@ double BoundaryScore(const cv::Mat& bgr, const FloorAppearance& floor, const Mer
   return count > 0 ? sum / count : 0.0;
 }
 
+double FloorLikenessBelow(const cv::Mat& bgr, const FloorAppearance& floor,
+                          const std::vector<Eigen::Vector2d>& points, const Eigen::Vector2d& normal,
+                          int roi_top, int scale) {
+  const int spacing = std::max(1, scale);
+  thread_local std::vector<cv::Vec3b> patches, lab;
+  patches.clear();
+  for (const Eigen::Vector2d& p : points) {
+    const Eigen::Vector2d q = p + 4.0 * spacing * normal;
+    const int u = cvRound(q.x()), v = cvRound(q.y()) - roi_top;
+    if (u < spacing || v < spacing || u >= bgr.cols - spacing || v >= bgr.rows - spacing) continue;
+    for (int dv = -spacing; dv <= spacing; dv += spacing) {
+      for (int du = -spacing; du <= spacing; du += spacing) {
+        patches.push_back(bgr.at<cv::Vec3b>(v + dv, u + du));
+      }
+    }
+  }
+  BgrToLabInto(patches, &lab);
+  const size_t count = lab.size() / 9;
+  if (count == 0) return -1;
+  double sum = 0;
+  for (size_t s = 0; s < count; ++s) {
+    cv::Vec3f mean(0, 0, 0);
+    for (size_t k = 0; k < 9; ++k) mean += cv::Vec3f(lab[9 * s + k]);
+    sum += Likeness(mean / 9.0f, floor);
+  }
+  return sum / static_cast<double>(count);
+}
+
 double FloorLikenessAbove(const cv::Mat& bgr, const FloorAppearance& floor,
                           const MergedLine& line, int roi_top, int scale) {
   thread_local std::vector<cv::Vec3b> strip, lab;

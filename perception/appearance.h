@@ -52,6 +52,13 @@ double BoundaryScore(const cv::Mat& bgr, const FloorAppearance& floor, const Mer
 double FloorLikenessAbove(const cv::Mat& bgr, const FloorAppearance& floor,
                           const MergedLine& line, int roi_top, int scale = 1);
 
+// The mean floor-likeness (as BoundaryScore gives a strip) of the 3x3 patches (pixels `scale`
+// apart) 4 `scale` px below each of `points` along `normal` (unit, pointing toward the floor); -1
+// when no patch is inside. `bgr` as for SampleFloor.
+double FloorLikenessBelow(const cv::Mat& bgr, const FloorAppearance& floor,
+                          const std::vector<Eigen::Vector2d>& points, const Eigen::Vector2d& normal,
+                          int roi_top, int scale = 1);
+
 // How unlike the floor just below `lower` the band between `upper` and `lower` looks: two lines
 // through one vanishing point on the same side, `upper` above (on the wall side of) `lower`. The
 // median, over samples along their common extent where the band is at least 4 `scale` px tall,

@@ -16,6 +16,8 @@ namespace {
 // the floor on both sides over which its factor falls from 1 to 0.5.
 constexpr int kMinFloorBeyondSamples = 20;
 constexpr double kFloorBeyondFrom = 0.1, kFloorBeyondTo = 0.2;
+// A junction line's confidence below which its little edge support weighs against the layout.
+constexpr double kWeakJunctionFrom = 0.03, kWeakJunctionTo = 0.15;
 
 double Ramp(double x, double x0, double x1) { return std::clamp((x - x0) / (x1 - x0), 0.0, 1.0); }
 
@@ -45,7 +47,7 @@ double FrameConfidence(const FrameEvidence& e, std::string* why) {
   for (int s = 0; s < 2; ++s) {
     // A junction line with hardly any boundary evidence or support is a weak base.
     if (e.junction[s] >= 0) {
-      factor(0.6 + 0.4 * Ramp(e.junction[s], 0.03, 0.15), [&] {
+      factor(0.6 + 0.4 * Ramp(e.junction[s], kWeakJunctionFrom, kWeakJunctionTo), [&] {
         return std::string("the ") + side_name[s] + " junction line has little edge support (" +
                Format("%.2f", e.junction[s]) + ")";
       });
@@ -118,6 +120,14 @@ double FrameConfidence(const FrameEvidence& e, std::string* why) {
     }
   }
   return std::clamp(confidence, 0.0, 1.0);
+}
+
+bool FloorGoesOnAcross(const FrameEvidence& evidence, int s) {
+  return (s == 0 || s == 1) && evidence.floor_across[s] >= kFloorBeyondFrom;
+}
+
+bool JunctionFullySupported(const FrameEvidence& evidence, int s) {
+  return (s == 0 || s == 1) && evidence.junction[s] >= kWeakJunctionTo;
 }
 
 FrameEvidence GatherFrameEvidence(const JunctionPair& junctions, const WorkingImage& search,

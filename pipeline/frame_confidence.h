@@ -16,6 +16,14 @@ namespace corridor {
 // message.
 double FrameConfidence(const FrameEvidence& evidence, std::string* why = nullptr);
 
+// True when the floor goes on across side s's junction (0 left, 1 right) on enough of its length
+// to weigh against the layout: the line may be an object's front foot, not the wall's.
+bool FloorGoesOnAcross(const FrameEvidence& evidence, int s);
+
+// True when side s's junction line has the edge support of a plain junction: its confidence is
+// high enough that its support does not weigh against the layout.
+bool JunctionFullySupported(const FrameEvidence& evidence, int s);
+
 // The evidence for a frame's geometry: the junction lines' own confidence (the one line, when one
 // junction is hidden), the vertical edges crossing them, counted on `search` (the frame at the
 // search resolution; none when it is empty), and what the reconstruction did (the ceiling sides'

@@ -11,6 +11,7 @@
 #include "pipeline/frame_handover.h"
 #include "pipeline/image_input.h"
 #include "pipeline/one_junction.h"
+#include "pipeline/outer_junction.h"
 #include "pipeline/roll_leveling.h"
 #include "pipeline/plausibility.h"
 #include "pipeline/sequence_holds.h"
@@ -179,11 +180,69 @@ Status DepthRecoverer::Detect(const cv::Mat& image, const Camera& camera,
 
 Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* result,
                                    const CorridorGeometry* previous) const {
-  const Status status = ReconstructAsSeen(camera, result, previous);
+  const std::string detect_notes = result->fallback;
+  Status status = ReconstructAsSeen(camera, result, previous);
+  if (status.code() == StatusCode::kLowConfidence) {
+    status = TryOuterJunctions(camera, detect_notes, result, previous);
+  }
   // A frame refused for its confidence is tried level too: a roll the model lacks may be what
   // weakens its evidence.
   if ((status.ok() || status.code() == StatusCode::kLowConfidence) && level_ != nullptr) {
     LevelRoll(*level_, camera, previous, result);
+  }
+  return result->status;
+}
+
+Status DepthRecoverer::TryOuterJunctions(const Camera& camera, const std::string& detect_notes,
+                                         RecoverDepthResult* result,
+                                         const CorridorGeometry* previous) const {
+  if (!result->junctions.status.ok() || result->handover == nullptr ||
+      result->handover->image.empty()) {
+    return result->status;
+  }
+  // Only a refusal that the floor across a junction decides: that evidence alone refuses the
+  // frame, and without it the frame would have been taken.
+  const FrameEvidence& evidence = result->evidence;
+  FrameEvidence without_floor = evidence, floor_only;
+  without_floor.floor_across[0] = without_floor.floor_across[1] = -1;
+  floor_only.floor_across[0] = evidence.floor_across[0];
+  floor_only.floor_across[1] = evidence.floor_across[1];
+  if (FrameConfidence(without_floor) < options_.min_confidence ||
+      FrameConfidence(floor_only) >= options_.min_confidence) {
+    return result->status;
+  }
+  // The side the floor goes on across more first.
+  const int first = evidence.floor_across[1] > evidence.floor_across[0] ? 1 : 0;
+  for (const int s : {first, 1 - first}) {
+    JunctionLine outer;
+    if (!FloorGoesOnAcross(evidence, s) ||
+        !FindOuterJunction(result->junctions, s, result->handover->image,
+                           WorkingScale(result->handover->image.cols,
+                                        options_.perception.max_work_width),
+                           &outer)) {
+      continue;
+    }
+    RecoverDepthResult trial;
+    trial.junctions = result->junctions;
+    if (!ReplaceJunction(s, std::move(outer), &trial.junctions)) continue;
+    trial.junctions_tracked = result->junctions_tracked;
+    trial.camera = result->camera;
+    trial.handover = result->handover;
+    trial.times.perception = result->times.perception;
+    trial.fallback = detect_notes;
+    // Taken when recovered, with the new line as well supported as a plain junction, and the
+    // floor not going on across it either (whatever the ceiling says: the wall's own junction has
+    // the wall beyond it all along).
+    if (!ReconstructAsSeen(camera, &trial, previous).ok() ||
+        !JunctionFullySupported(trial.evidence, s) || FloorGoesOnAcross(trial.evidence, s)) {
+      continue;
+    }
+    const std::string refusal = result->status.message();
+    *result = std::move(trial);
+    result->AddNote(std::string("the ") + (s == 0 ? "left" : "right") +
+                    " wall's own junction, further out, taken for the line first taken (" +
+                    refusal + ")");
+    return result->status;
   }
   return result->status;
 }

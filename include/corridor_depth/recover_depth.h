@@ -153,6 +153,11 @@ class DepthRecoverer {
   // Reconstruct without the roll's levelling.
   Status ReconstructAsSeen(const Camera& camera, RecoverDepthResult* result,
                            const CorridorGeometry* previous) const;
+  // After a refusal because the floor goes on across a junction: the frame again with the wall's
+  // own junction further out in that line's place (pipeline/outer_junction.h), taken when it is
+  // recovered. `detect_notes` are Detect's notes on the frame.
+  Status TryOuterJunctions(const Camera& camera, const std::string& detect_notes,
+                           RecoverDepthResult* result, const CorridorGeometry* previous) const;
 
   const RecoverDepthOptions options_;
   const std::unique_ptr<CorridorSolver> solver_;
