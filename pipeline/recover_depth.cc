@@ -201,16 +201,12 @@ Status DepthRecoverer::TryOuterJunctions(const Camera& camera, const std::string
     return result->status;
   }
   // Only a refusal that the floor across a junction decides: that evidence alone refuses the
-  // frame, and without it the frame would have been taken.
+  // frame.
   const FrameEvidence& evidence = result->evidence;
-  FrameEvidence without_floor = evidence, floor_only;
-  without_floor.floor_across[0] = without_floor.floor_across[1] = -1;
+  FrameEvidence floor_only;
   floor_only.floor_across[0] = evidence.floor_across[0];
   floor_only.floor_across[1] = evidence.floor_across[1];
-  if (FrameConfidence(without_floor) < options_.min_confidence ||
-      FrameConfidence(floor_only) >= options_.min_confidence) {
-    return result->status;
-  }
+  if (FrameConfidence(floor_only) >= options_.min_confidence) return result->status;
   // The side the floor goes on across more first.
   const int first = evidence.floor_across[1] > evidence.floor_across[0] ? 1 : 0;
   for (const int s : {first, 1 - first}) {
