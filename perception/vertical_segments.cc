@@ -4,12 +4,9 @@
 #include <cmath>
 #include <cstdlib>
 
-#ifdef __SSE2__
-#include <emmintrin.h>
-#endif
-
 #include "kernels/channel_plane.h"
 #include "kernels/edge_scan.h"
+#include "kernels/sobel_row.h"
 
 namespace corridor {
 namespace {
@@ -32,26 +29,6 @@ struct Peak {
   double x;
   int sign;
 };
-
-// s[x] = 1 (or 0xff) where |g[x]| >= threshold, else 0, for x in [begin, end); |g| <= 1020 (a
-// 3x3 Sobel of 8-bit values). Sixteen at a time with SSE2 (two signed comparisons of 16-bit lanes,
-// packed to bytes).
-void StrongColumns(const short* g, int begin, int end, int threshold, uchar* s) {
-  threshold = std::min(threshold, 1021);  // Nothing reaches more: no lane overflows below.
-  int x = begin;
-#ifdef __SSE2__
-  const __m128i above = _mm_set1_epi16(static_cast<short>(threshold - 1));
-  const __m128i below = _mm_set1_epi16(static_cast<short>(1 - threshold));
-  for (; x + 16 <= end; x += 16) {
-    const __m128i a = _mm_loadu_si128(reinterpret_cast<const __m128i*>(g + x));
-    const __m128i b = _mm_loadu_si128(reinterpret_cast<const __m128i*>(g + x + 8));
-    const __m128i strong_a = _mm_or_si128(_mm_cmpgt_epi16(a, above), _mm_cmplt_epi16(a, below));
-    const __m128i strong_b = _mm_or_si128(_mm_cmpgt_epi16(b, above), _mm_cmplt_epi16(b, below));
-    _mm_storeu_si128(reinterpret_cast<__m128i*>(s + x), _mm_packs_epi16(strong_a, strong_b));
-  }
-#endif
-  for (; x < end; ++x) s[x] = std::abs(g[x]) >= threshold;
-}
 
 }  // namespace
 
@@ -138,13 +115,7 @@ void FindVerticalSegments(const cv::Mat& grey, const VerticalSegmentOptions& opt
     short* g = row.data();
     uchar* s = strong.data();
     const auto sobel = [&](int begin, int end) {
-      begin = std::max(1, begin);
-      end = std::min(cols - 1, end);
-      for (int x = begin; x < end; ++x) {
-        g[x] = static_cast<short>((up[x + 1] - up[x - 1]) + 2 * (mid[x + 1] - mid[x - 1]) +
-                                  (down[x + 1] - down[x - 1]));
-      }
-      StrongColumns(g, begin, end, threshold, s);
+      SobelXRow(up, mid, down, std::max(1, begin), std::min(cols - 1, end), threshold, g, s);
     };
     sobel(1, span_begin + 1);
     sobel(span_end - 1, cols - 1);
