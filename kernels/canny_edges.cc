@@ -57,11 +57,57 @@ void MagnitudeRow(const int16_t* dx, const int16_t* dy, int n, uint32_t least, u
 void EdgeRow(const uint8_t* map, int n, uint8_t* out) { EdgeRowBody(map, n, out); }
 
 #ifdef CORRIDOR_AVX2_VARIANTS
+// Sixteen pixels' magnitudes, in 32-bit lanes in the in-lane unpacks' order: *lo pixels 0-3 and
+// 8-11, *hi pixels 4-7 and 12-15. L2: one multiply-add of each (x, y) pair, x^2 + y^2 <= 2^31
+// read as unsigned (only dx = dy = -32768 reaches 2^31, which the cap makes 2^31 - 1). L1: |x| and
+// |y| widened before they are added (|-32768| is 32768 as an unsigned 16-bit value).
+template <bool kL2>
+__attribute__((target("avx2"))) inline void SixteenMagnitudes(const int16_t* dx, const int16_t* dy,
+                                                              __m256i* lo, __m256i* hi) {
+  const __m256i x = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(dx));
+  const __m256i y = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(dy));
+  if constexpr (kL2) {
+    const __m256i cap = _mm256_set1_epi32(static_cast<int32_t>(kMaxMagnitude));
+    const __m256i pairs_lo = _mm256_unpacklo_epi16(x, y), pairs_hi = _mm256_unpackhi_epi16(x, y);
+    *lo = _mm256_min_epu32(_mm256_madd_epi16(pairs_lo, pairs_lo), cap);
+    *hi = _mm256_min_epu32(_mm256_madd_epi16(pairs_hi, pairs_hi), cap);
+  } else {
+    const __m256i zero = _mm256_setzero_si256();
+    const __m256i ax = _mm256_abs_epi16(x), ay = _mm256_abs_epi16(y);
+    *lo = _mm256_add_epi32(_mm256_unpacklo_epi16(ax, zero), _mm256_unpacklo_epi16(ay, zero));
+    *hi = _mm256_add_epi32(_mm256_unpackhi_epi16(ax, zero), _mm256_unpackhi_epi16(ay, zero));
+  }
+}
+
+// MagnitudeBody 32 pixels a step (the magnitudes stored in pixel order; the candidates' masks
+// packed, whose in-lane order the packs restore), then pixel by pixel: the same values.
 template <bool kL2>
 __attribute__((target("avx2"))) void MagnitudeRowAvx2(const int16_t* dx, const int16_t* dy, int n,
                                                       uint32_t least, uint32_t* m,
                                                       uint8_t* candidate) {
-  MagnitudeBody<kL2>(dx, dy, n, least, m, candidate);
+  const __m256i least_v = _mm256_set1_epi32(static_cast<int32_t>(least));
+  const __m256i one = _mm256_set1_epi8(1);
+  int j = 0;
+  for (; j + 32 <= n; j += 32) {
+    __m256i masks[2];
+    for (int half = 0; half < 2; ++half) {
+      const int at = j + 16 * half;
+      __m256i lo, hi;
+      SixteenMagnitudes<kL2>(dx + at, dy + at, &lo, &hi);
+      _mm256_storeu_si256(reinterpret_cast<__m256i*>(m + at),
+                          _mm256_permute2x128_si256(lo, hi, 0x20));
+      _mm256_storeu_si256(reinterpret_cast<__m256i*>(m + at + 8),
+                          _mm256_permute2x128_si256(lo, hi, 0x31));
+      // magnitude >= least, unsigned: max(magnitude, least) == magnitude.
+      const __m256i at_least_lo = _mm256_cmpeq_epi32(_mm256_max_epu32(lo, least_v), lo);
+      const __m256i at_least_hi = _mm256_cmpeq_epi32(_mm256_max_epu32(hi, least_v), hi);
+      masks[half] = _mm256_packs_epi32(at_least_lo, at_least_hi);  // Pixels 0-15 in order.
+    }
+    const __m256i bytes =
+        _mm256_permute4x64_epi64(_mm256_packs_epi16(masks[0], masks[1]), 0xd8);
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(candidate + j), _mm256_and_si256(bytes, one));
+  }
+  MagnitudeBody<kL2>(dx + j, dy + j, n - j, least, m + j, candidate + j);
 }
 __attribute__((target("avx2"))) void EdgeRowAvx2(const uint8_t* map, int n, uint8_t* out) {
   EdgeRowBody(map, n, out);

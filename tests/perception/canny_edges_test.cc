@@ -65,6 +65,27 @@ TEST(CannyEdgesTest, EqualsOpenCvOnACorridorsSobelDerivatives) {
   ExpectSameAsOpenCv(dx, dy, 0, 0, false, "corridor, zero thresholds");
 }
 
+// The largest derivatives, where OpenCV's int arithmetic overflows: by the header's rule the L2
+// magnitude of (-32768, -32768) is 2^31 (capped at 2^31 - 1) and its L1 magnitude 65536, both
+// above the highest thresholds, so each lone pixel (its neighbours zero) is an edge; (32767,
+// -32768) likewise. Pixels at columns the row loops take in groups and one by one.
+TEST(CannyEdgesTest, LoneExtremeDerivativesAreEdges) {
+  for (bool l2 : {false, true}) {
+    cv::Mat dx(9, 70, CV_16SC1, cv::Scalar(0)), dy(9, 70, CV_16SC1, cv::Scalar(0));
+    const cv::Point at[] = {{5, 1}, {31, 3}, {37, 5}, {67, 7}};
+    for (const cv::Point& p : at) {
+      dx.at<int16_t>(p) = p.x == 37 ? 32767 : -32768;
+      dy.at<int16_t>(p) = -32768;
+    }
+    const double high = l2 ? 32767 : 65534;
+    cv::Mat edges;
+    ASSERT_TRUE(CannyFromGradients(dx, dy, high, high, l2, &edges).ok());
+    cv::Mat expected(dx.size(), CV_8UC1, cv::Scalar(0));
+    for (const cv::Point& p : at) expected.at<uint8_t>(p) = 255;
+    EXPECT_EQ(cv::countNonZero(edges != expected), 0) << (l2 ? "L2" : "L1");
+  }
+}
+
 TEST(CannyEdgesTest, RejectsDerivativesOfTheWrongTypeOrSize) {
   cv::Mat edges;
   const cv::Mat a(4, 5, CV_16SC1, cv::Scalar(0)), b(5, 4, CV_16SC1, cv::Scalar(0));
