@@ -72,6 +72,46 @@ CORRIDOR_ALWAYS_INLINE inline void SelectChannel(const short* s, const short* t,
   }
 }
 
+#ifdef CORRIDOR_AVX2_VARIANTS
+// Sixteen shorts from memory.
+__attribute__((target("avx2"))) inline __m256i LoadShorts(const short* p) {
+  return _mm256_loadu_si256(reinterpret_cast<const __m256i*>(p));
+}
+
+// The per-pixel choice among the channels (SelectChannel's) sixteen pixels a step from each
+// channel's s and t rows (s[c], t[c]); returns the first pixel not done. 16-bit lanes: the same
+// wrapping sums as SelectChannel's shorts, magnitudes (at most 2040) compared signed, a later
+// channel taken only where strictly larger.
+template <int kChannels>
+__attribute__((target("avx2"))) inline int SelectChannelsAvx2(const short* const* s,
+                                                              const short* const* t, int cols,
+                                                              short* bx, short* by, short* best) {
+  int u = 0;
+  for (; u + 16 <= cols; u += 16) {
+    __m256i x = _mm256_setzero_si256(), y = x, mag = x;
+    for (int c = 0; c < kChannels; ++c) {
+      const __m256i cx = _mm256_sub_epi16(LoadShorts(s[c] + u + 2), LoadShorts(s[c] + u));
+      const __m256i middle = LoadShorts(t[c] + u + 1);
+      const __m256i cy = _mm256_add_epi16(_mm256_add_epi16(LoadShorts(t[c] + u), LoadShorts(t[c] + u + 2)),
+                                          _mm256_add_epi16(middle, middle));
+      const __m256i cm = _mm256_add_epi16(_mm256_abs_epi16(cx), _mm256_abs_epi16(cy));
+      if (c == 0) {
+        x = cx, y = cy, mag = cm;
+        continue;
+      }
+      const __m256i larger = _mm256_cmpgt_epi16(cm, mag);
+      x = _mm256_blendv_epi8(x, cx, larger);
+      y = _mm256_blendv_epi8(y, cy, larger);
+      mag = _mm256_max_epi16(mag, cm);  // cm where larger, else mag.
+    }
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(bx + u), x);
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(by + u), y);
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(best + u), mag);
+  }
+  return u;
+}
+#endif
+
 // All kChannels channels of a row (planar rows above, at and below): their s and t rows into
 // `sums` (2 (cols + 2) shorts a channel), then one pass choosing per pixel among the channels
 // in registers, storing bx, by and best once. kAvx2: the sums through SobelSumsAvx2.
@@ -101,10 +141,18 @@ CORRIDOR_ALWAYS_INLINE inline void ChannelsRowBody(const uchar* const* above,
   const short* t2 = s2 + cols + 2;
   const short* s3 = sums + (kChannels > 3 ? 3 : 0) * stride;
   const short* t3 = s3 + cols + 2;
+  int from = 0;
+#ifdef CORRIDOR_AVX2_VARIANTS
+  if constexpr (kAvx2) {
+    const short* const s[4] = {s0, s1, s2, s3};
+    const short* const t[4] = {t0, t1, t2, t3};
+    from = SelectChannelsAvx2<kChannels>(s, t, cols, bx, by, best);
+  }
+#endif
   // The outputs never overlap the sums (GCC cannot tell, and checking it at run time for every
   // pointer pair is more than it will do).
 #pragma GCC ivdep
-  for (int u = 0; u < cols; ++u) {
+  for (int u = from; u < cols; ++u) {
     short x, y, mag;
     SelectChannel<true>(s0, t0, u, &x, &y, &mag);
     if (kChannels > 1) SelectChannel<false>(s1, t1, u, &x, &y, &mag);

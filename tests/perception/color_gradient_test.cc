@@ -73,6 +73,16 @@ TEST(ColorGradientTest, MatchesSobelPerChannelOnNoiseAndEveryBorder) {
   ExpectSameGradient(RandomImage(5, 130, CV_8UC4, 11));
 }
 
+// Three grey levels: channels of equal |dx| + |dy| but different derivatives at many pixels,
+// where the first channel must be the one chosen.
+TEST(ColorGradientTest, TiesGoToTheFirstChannel) {
+  for (const int type : {CV_8UC2, CV_8UC3, CV_8UC4}) {
+    cv::Mat image(9, 77, type);
+    cv::RNG(21).fill(image, cv::RNG::UNIFORM, 0, 3);
+    ExpectSameGradient(image);
+  }
+}
+
 TEST(ColorGradientTest, AViewIsTakenOnItsOwnLikeACopy) {
   const cv::Mat image = RandomImage(60, 40, CV_8UC3, 7);
   const cv::Mat view = image.rowRange(20, 60);
