@@ -14,10 +14,16 @@
 #include "synth/corridor_renderer.h"
 #include "synth/corridor_scene.h"
 #include "synth/real_buildings.h"
+#include "tests/support/plain_corridor.h"
 #include "tests/support/preset_frame.h"
 
 namespace corridor {
 namespace {
+
+using testing_util::FloorLine;
+using testing_util::PlainCorridorCamera;
+using testing_util::PlainCorridorOptions;
+using testing_util::PlainScene;
 
 constexpr double kBoxDepth = 0.55;            // How far the box stands out from the left wall, m.
 constexpr double kBoxZ0 = 2.0, kBoxZ1 = 3.6;  // Its extent along the corridor, m ahead.
@@ -28,24 +34,12 @@ struct BoxFrame {
   synth::CameraPose pose;
 };
 
-// The corridor of `options` without doors or boxes: nothing but its walls, floor and ceiling.
-synth::CorridorScene PlainScene(const synth::SceneOptions& options) {
-  synth::CorridorScene scene = synth::BuildScene(options);
-  scene.doors.clear();
-  scene.obstacles.clear();
-  return scene;
-}
-
 // A plain corridor (no doors, no clutter) with one box against the left wall, ahead of the
 // camera.
 BoxFrame RenderBoxFrame() {
   BoxFrame out;
-  out.camera = Camera::FromHorizontalFov(640, 480, 80.0 * M_PI / 180, 0.66);
-  synth::SceneOptions options;
-  options.width = 2.6;
-  options.ceiling_height = 2.8;
-  options.clutter = 0;
-  options.seed = 11;
+  out.camera = PlainCorridorCamera();
+  const synth::SceneOptions options = PlainCorridorOptions();
   synth::CorridorScene scene = PlainScene(options);
   out.pose = synth::CameraPose{0.05, 0.04, 0.1, 0.66, 3.0};
   synth::Obstacle box;
@@ -56,26 +50,6 @@ BoxFrame RenderBoxFrame() {
   scene.obstacles.push_back(box);
   EXPECT_TRUE(synth::RenderFrame(scene, out.camera, out.pose, &out.frame).ok());
   return out;
-}
-
-// The raw pixel of the corridor-frame point (x right, y down from the camera, z ahead).
-Eigen::Vector2d Pixel(const Camera& camera, const CorridorGeometry& g, double x, double y,
-                      double z) {
-  const CorridorRotation<double> r(g.pitch, g.yaw);
-  const Vec3<double> c = r.ToCamera({x, y, z});
-  return camera.Project({c.x, c.y, c.z});
-}
-
-// The floor line x = `x` (corridor frame) with its support from z0 to z1 ahead.
-JunctionLine FloorLine(const Camera& camera, const CorridorGeometry& g, double x, double z0,
-                       double z1) {
-  JunctionLine line;
-  line.near_end = Pixel(camera, g, x, g.camera_height, z0);
-  line.far_end = Pixel(camera, g, x, g.camera_height, z1);
-  const Eigen::Vector2d d = (line.far_end - line.near_end).normalized();
-  line.line = Eigen::Vector3d(-d.y(), d.x(), d.y() * line.near_end.x() - d.x() * line.near_end.y());
-  line.support_length = (line.far_end - line.near_end).norm();
-  return line;
 }
 
 TEST(FloorBeyondTest, TheFloorGoesOnAcrossABoxFootButNotAcrossAWallFoot) {

@@ -13,10 +13,17 @@
 #include "pipeline/outer_junction.h"
 #include "synth/corridor_renderer.h"
 #include "synth/corridor_scene.h"
+#include "tests/support/plain_corridor.h"
 #include "tests/support/preset_frame.h"
 
 namespace corridor {
 namespace {
+
+using testing_util::CorridorPixel;
+using testing_util::FloorLine;
+using testing_util::PlainCorridorCamera;
+using testing_util::PlainCorridorOptions;
+using testing_util::PlainScene;
 
 constexpr double kPillarDepth = 0.35;  // How far the pillars stand out from the left wall, m.
 
@@ -29,15 +36,9 @@ struct PillarFrame {
 // along the corridor every 2.5 m, from 2 m ahead of the camera.
 PillarFrame RenderPillarFrame() {
   PillarFrame out;
-  out.camera = Camera::FromHorizontalFov(640, 480, 80.0 * M_PI / 180, 0.66);
-  synth::SceneOptions options;
-  options.width = 2.6;
-  options.ceiling_height = 2.8;
-  options.clutter = 0;
-  options.seed = 11;
-  synth::CorridorScene scene = synth::BuildScene(options);
-  scene.doors.clear();
-  scene.obstacles.clear();
+  out.camera = PlainCorridorCamera();
+  const synth::SceneOptions options = PlainCorridorOptions();
+  synth::CorridorScene scene = PlainScene(options);
   const synth::CameraPose pose{0.05, 0.04, 0.1, 0.66, 3.0};
   for (double z = 2.0; z < 30.0; z += 2.5) {
     synth::Obstacle pillar;
@@ -52,24 +53,9 @@ PillarFrame RenderPillarFrame() {
   return out;
 }
 
-// The raw pixel of the corridor-frame point (x right, y down from the camera, z ahead).
+// The raw pixel of the floor point x (corridor frame) z ahead.
 Eigen::Vector2d Pixel(const Camera& camera, const CorridorGeometry& g, double x, double z) {
-  const CorridorRotation<double> r(g.pitch, g.yaw);
-  const Vec3<double> c = r.ToCamera({x, g.camera_height, z});
-  return camera.Project({c.x, c.y, c.z});
-}
-
-// The floor line x = `x` (corridor frame), with its support from z0 to z1 ahead.
-JunctionLine FloorLine(const Camera& camera, const CorridorGeometry& g, double x, double z0,
-                       double z1) {
-  JunctionLine line;
-  line.near_end = Pixel(camera, g, x, z0);
-  line.far_end = Pixel(camera, g, x, z1);
-  const Eigen::Vector2d d = (line.far_end - line.near_end).normalized();
-  line.line = Eigen::Vector3d(-d.y(), d.x(), d.y() * line.near_end.x() - d.x() * line.near_end.y());
-  line.support_length = (line.far_end - line.near_end).norm();
-  line.confidence = 0.5;
-  return line;
+  return CorridorPixel(camera, g, x, g.camera_height, z);
 }
 
 // The distance (px) of the image point p from the line (a, b, c), a^2 + b^2 = 1.
@@ -93,7 +79,9 @@ TEST(OuterJunctionTest, ThePillarsFrontFootLeadsToTheWallsFoot) {
   ASSERT_FALSE(f.frame.bgr.empty());
   const CorridorGeometry& g = f.frame.truth;
   const double wall = -g.LeftDistance();
-  const JunctionPair pair = PairWithLeft(f, FloorLine(f.camera, g, wall + kPillarDepth, 2, 12));
+  JunctionLine front = FloorLine(f.camera, g, wall + kPillarDepth, 2, 12);
+  front.confidence = 0.5;
+  const JunctionPair pair = PairWithLeft(f, front);
   ASSERT_FALSE(pair.segments.empty());
   JunctionLine outer;
   ASSERT_TRUE(FindOuterJunction(pair, 0, f.frame.bgr, 1, &outer));
