@@ -9,6 +9,7 @@
 #include "perception/junction_detector.h"
 #include "perception/junction_memory.h"
 #include "perception/robust_line_fit.h"
+#include "perception/support_extent.h"
 
 namespace corridor {
 namespace {
@@ -119,24 +120,15 @@ JunctionLine RefineJunction(const JunctionCandidate& candidate,
   if (support.size() < 8) {
     support = {candidate.line.start, candidate.line.end};
   }
-  double lo = 1e300, hi = -1e300;
-  std::vector<int>& bins = scratch.bins;
-  bins.clear();
-  for (const auto& p : support) {
-    const double t = (p - origin).dot(direction);
-    lo = std::min(lo, t);
-    hi = std::max(hi, t);
-    bins.push_back(static_cast<int>(std::floor(t)));
-  }
-  std::sort(bins.begin(), bins.end());
-  out.support_length = static_cast<double>(std::unique(bins.begin(), bins.end()) - bins.begin());
+  const SupportExtent extent = MeasureSupport(support, line, &scratch.bins);
+  const double lo = extent.lo, hi = extent.hi;
+  out.support_length = static_cast<double>(extent.covered);
   const Eigen::Vector2d a = origin + lo * direction, b = origin + hi * direction;
   // The near end is the lower one (larger v).
   out.near_end = a.y() > b.y() ? a : b;
   out.far_end = a.y() > b.y() ? b : a;
   out.support = std::move(support);
-  out.confidence = std::clamp(candidate.boundary, 0.0, 1.0) *
-                   std::min(1.0, out.support_length / (0.25 * image_height));
+  out.confidence = JunctionConfidence(candidate.boundary, out.support_length, image_height);
   return out;
 }
 

@@ -9,6 +9,7 @@
 
 #include "perception/appearance.h"
 #include "perception/junction_refit.h"
+#include "perception/support_extent.h"
 
 namespace corridor {
 namespace {
@@ -75,20 +76,14 @@ Eigen::Vector2d FloorwardNormal(const Eigen::Vector3d& line, const Eigen::Vector
 }
 
 // The support's length in whole pixels along the line, and the confidence the detector gives a
-// line of that length (junction_support.h) with the boundary score of the line it replaces.
+// line of that length with the boundary score of the line it replaces (support_extent.h).
 void SetConfidence(const JunctionLine& chosen, int image_rows, JunctionLine* line) {
-  const Eigen::Vector2d dir(line->line.y(), -line->line.x());
-  std::vector<long> bins;
-  bins.reserve(line->support.size());
-  for (const Eigen::Vector2d& p : line->support) bins.push_back(std::lround(p.dot(dir)));
-  std::sort(bins.begin(), bins.end());
-  line->support_length = static_cast<double>(std::unique(bins.begin(), bins.end()) - bins.begin());
-  const auto length_factor = [&](double support_length) {
-    return std::min(1.0, support_length / (0.25 * image_rows));
-  };
-  const double chosen_length = length_factor(chosen.support_length);
+  std::vector<int> bins;
+  line->support_length = MeasureSupport(line->support, line->line, &bins).covered;
+  // The chosen line's boundary score: its confidence over its length's factor.
+  const double chosen_length = JunctionConfidence(1.0, chosen.support_length, image_rows);
   const double boundary = chosen_length > 0 ? std::min(1.0, chosen.confidence / chosen_length) : 0;
-  line->confidence = boundary * length_factor(line->support_length);
+  line->confidence = JunctionConfidence(boundary, line->support_length, image_rows);
 }
 
 }  // namespace
