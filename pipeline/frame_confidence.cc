@@ -18,6 +18,9 @@ constexpr int kMinFloorBeyondSamples = 20;
 constexpr double kFloorBeyondFrom = 0.1, kFloorBeyondTo = 0.2;
 // A junction line's confidence below which its little edge support weighs against the layout.
 constexpr double kWeakJunctionFrom = 0.03, kWeakJunctionTo = 0.15;
+// The factor of a junction line with less than kWeakJunctionFrom, unconfirmed: under the default
+// min_confidence (0.6) on its own.
+constexpr double kNoJunctionFactor = 0.5;
 
 double Ramp(double x, double x0, double x1) { return std::clamp((x - x0) / (x1 - x0), 0.0, 1.0); }
 
@@ -44,12 +47,21 @@ double FrameConfidence(const FrameEvidence& e, std::string* why) {
     }
   };
   const char* const side_name[2] = {"left", "right"};
+  // Two ceiling sides that agree confirm both walls' distances.
+  const bool ceiling_confirms = e.ceiling_disagreement >= 0 &&
+                                e.ceiling_disagreement <= std::log(kCeilingSidesAgree);
   for (int s = 0; s < 2; ++s) {
-    // A junction line with hardly any boundary evidence or support is a weak base.
+    // A junction line with hardly any boundary evidence or support is a weak base. With none at
+    // all (it bounds no floor: a line on a wall, a sill's or a wainscot's) and no ceiling to
+    // confirm its wall, the layout rests on nothing: refused on its own.
     if (e.junction[s] >= 0) {
-      factor(0.6 + 0.4 * Ramp(e.junction[s], kWeakJunctionFrom, kWeakJunctionTo), [&] {
+      const double f = e.junction[s] >= kWeakJunctionFrom || ceiling_confirms
+                           ? 0.6 + 0.4 * Ramp(e.junction[s], kWeakJunctionFrom, kWeakJunctionTo)
+                           : kNoJunctionFactor;
+      factor(f, [&] {
         return std::string("the ") + side_name[s] + " junction line has little edge support (" +
-               Format("%.2f", e.junction[s]) + ")";
+               Format("%.2f", e.junction[s]) + ")" +
+               (f == kNoJunctionFactor ? " and no ceiling confirms its wall" : "");
       });
     }
     // Vertical edges that go on below a junction: the wall goes on below it. With few edges the
@@ -69,8 +81,6 @@ double FrameConfidence(const FrameEvidence& e, std::string* why) {
   // (a box's, a bench's, a pillar's) taken for the wall's, which ends where the object ends. Two
   // ceiling sides that agree confirm the walls; otherwise the frame cannot tell the object's face
   // from the wall, and the layout that puts the wall on the object may be the wrong one.
-  const bool ceiling_confirms = e.ceiling_disagreement >= 0 &&
-                                e.ceiling_disagreement <= std::log(kCeilingSidesAgree);
   for (int s = 0; s < 2 && !ceiling_confirms; ++s) {
     if (e.floor_across[s] < 0) continue;
     factor(1.0 - 0.5 * Ramp(e.floor_across[s], kFloorBeyondFrom, kFloorBeyondTo), [&] {

@@ -39,5 +39,29 @@ TEST(FrameConfidenceTest, TheWeakestFactorGivesTheReason) {
   EXPECT_EQ(why, "the two ceiling sides disagree by 25%: a junction is not the floor's edge");
 }
 
+TEST(FrameConfidenceTest, AJunctionWithNoEdgeSupportIsRefusedUnlessTheCeilingConfirmsIt) {
+  FrameEvidence e;
+  e.junction[0] = 0.01;  // Under the ramp's start (0.03).
+  e.junction[1] = 0.5;
+  std::string why;
+  // No ceiling compared: 0.5 on its own, under the default bar of 0.6.
+  EXPECT_DOUBLE_EQ(FrameConfidence(e, &why), 0.5);
+  EXPECT_EQ(why,
+            "the left junction line has little edge support (0.01) and no ceiling confirms "
+            "its wall");
+  // Ceiling sides 20% apart do not confirm it either.
+  e.ceiling_disagreement = std::log(1.2);
+  EXPECT_NEAR(FrameConfidence(e), 0.5 * (1.0 - 0.4 * (std::log(1.2) - 0.1) / 0.2), 1e-12);
+  // Sides 2% apart (within 6%) confirm both walls: the ramp's floor of 0.6, and the ceiling's
+  // factor of 1 (under 0.1).
+  e.ceiling_disagreement = std::log(1.02);
+  EXPECT_DOUBLE_EQ(FrameConfidence(e, &why), 0.6);
+  EXPECT_EQ(why, "the left junction line has little edge support (0.01)");
+  // From the ramp's start on, the ramp: 0.03 gives 0.6 without a ceiling.
+  e.ceiling_disagreement = -1;
+  e.junction[0] = 0.03;
+  EXPECT_DOUBLE_EQ(FrameConfidence(e), 0.6);
+}
+
 }  // namespace
 }  // namespace corridor
