@@ -123,47 +123,82 @@ void SampleDepths(const CeilingDetectorOptions& o, std::vector<double>* depths) 
   }
 }
 
+// The coarse search's stride in heights (options.step each), the rows of edges kept above the
+// coarse lines' for the fine ones between them, and how many of the best coarse heights (by the
+// sum of the two sides' supports, and by each side's) are searched around.
+constexpr size_t kCoarseStride = 3;
+constexpr int kFineRows = 2;
+constexpr int kRefined = 8;
+
+// The heights of the kRefined highest positive values offered, highest first (the first offered
+// of equal ones first).
+struct TopHeights {
+  double value[kRefined];
+  size_t at[kRefined];
+  int size = 0;
+
+  void Offer(double v, size_t k) {
+    if (!(v > 0)) return;
+    int j = size;
+    while (j > 0 && v > value[j - 1]) --j;
+    if (j >= kRefined) return;
+    for (int m = std::min(size, kRefined - 1); m > j; --m) {
+      value[m] = value[m - 1];
+      at[m] = at[m - 1];
+    }
+    value[j] = v;
+    at[j] = k;
+    size = std::min(size + 1, kRefined);
+  }
+};
+
 // Samples a line must count as visible at least, when judged on those in view.
 int CountedSamples(const CeilingDetectorOptions& o) {
   return std::max(1, static_cast<int>(std::lround(o.min_counted_fraction * o.samples)));
 }
 
-void ProjectSearchLines(const Camera& camera, const CorridorGeometry& g,
-                        const CeilingDetectorOptions& o, SearchLines* lines) {
-  const CorridorRotation<double> r(g.pitch, g.yaw);
-  const double h = g.camera_height;
-  const double wall_x[2] = {-g.LeftDistance(), g.RightDistance()};
-  const double lo = std::max(o.min_height, h + 0.1);
+// The searched heights, the samples' depths and the pixel buffer of `lines`; no line projected
+// yet (ProjectHeight), no rows spanned.
+void SetUpSearchLines(const Camera& camera, const CorridorGeometry& g,
+                      const CeilingDetectorOptions& o, SearchLines* lines) {
+  const double lo = std::max(o.min_height, g.camera_height + 0.1);
+  lines->heights.clear();
   for (double height = lo; height <= o.max_height; height += o.step) {
     lines->heights.push_back(height);
   }
   lines->samples = o.samples;
   SampleDepths(o, &lines->depths);
-  const std::vector<double>& depths = lines->depths;
-  // Every point is written below; the buffer keeps its memory from the thread's last search.
+  // Every projected line's points are written; the buffer keeps its memory from the thread's last
+  // search.
   lines->pixels.resize(lines->heights.size() * 2 * o.samples);
   lines->top = camera.image_height;
   lines->bottom = -1;
-  const bool distorted = camera.HasDistortion();
-  const RowProjector fast = ChooseRowProjector(distorted);
-  cv::Point* out = lines->pixels.data();
-  for (const double height : lines->heights) {
-    const double y = h - height;  // Corridor Y of the ceiling (negative: above the camera).
-    for (int side = 0; side < 2; ++side, out += o.samples) {
-      int i = 0;
-      if (fast != nullptr) {
-        i = fast(camera, r, wall_x[side], y, depths.data(), o.samples, out, &lines->top,
-                 &lines->bottom);
-      }
-      for (; i < o.samples; ++i) {
-        cv::Point p;
-        const bool seen =
-            ProjectCorridorPoint(camera, distorted, r, wall_x[side], y, depths[i], 1, &p);
-        out[i] = seen ? p : cv::Point(-1, -1);
-        if (!seen) continue;
-        lines->top = std::min(lines->top, p.y);
-        lines->bottom = std::max(lines->bottom, p.y);
-      }
+}
+
+// Projects the two lines of height index k into `lines`, widening its rows spanned.
+void ProjectHeight(const Camera& camera, const CorridorGeometry& g,
+                   const CorridorRotation<double>& r, RowProjector fast, size_t k,
+                   SearchLines* lines) {
+  const double wall_x[2] = {-g.LeftDistance(), g.RightDistance()};
+  const bool distorted = fast == nullptr && camera.HasDistortion();
+  const std::vector<double>& depths = lines->depths;
+  const int samples = lines->samples;
+  const double y = g.camera_height - lines->heights[k];  // Corridor Y of the ceiling (< 0).
+  cv::Point* out = lines->pixels.data() + 2 * k * samples;
+  for (int side = 0; side < 2; ++side, out += samples) {
+    int i = 0;
+    if (fast != nullptr) {
+      i = fast(camera, r, wall_x[side], y, depths.data(), samples, out, &lines->top,
+               &lines->bottom);
+    }
+    for (; i < samples; ++i) {
+      cv::Point p;
+      const bool seen =
+          ProjectCorridorPoint(camera, distorted, r, wall_x[side], y, depths[i], 1, &p);
+      out[i] = seen ? p : cv::Point(-1, -1);
+      if (!seen) continue;
+      lines->top = std::min(lines->top, p.y);
+      lines->bottom = std::max(lines->bottom, p.y);
     }
   }
 }
@@ -195,7 +230,6 @@ Status DetectCeiling(const cv::Mat& bgr, const Camera& camera, const CorridorGeo
   if (bgr.empty() || bgr.cols != camera.image_width || bgr.rows != camera.image_height) {
     return Status::InvalidArgument("ceiling detector: image does not match the camera");
   }
-  // Every candidate line is projected once; edges are computed only on the rows they cross.
   // Per thread, so that its half a megabyte of pixels is allocated once, not every search.
   thread_local SearchLines thread_lines;
   // Its address opaque to the optimiser, so that a shared object does not call __tls_get_addr at
@@ -204,36 +238,124 @@ Status DetectCeiling(const cv::Mat& bgr, const Camera& camera, const CorridorGeo
   asm(""
       : "+r"(lines_address));
   SearchLines& lines = *lines_address;
-  lines.heights.clear();  // ProjectSearchLines sets the rest.
-  ProjectSearchLines(camera, g, o, &lines);
+  SetUpSearchLines(camera, g, o, &lines);
+  const size_t count = lines.heights.size();
+  if (count == 0) {
+    estimate->reason = "no ceiling/wall junction follows the image's edges";
+    return Status::Ok();
+  }
+  // Coarse to fine: every kCoarseStride-th height (and the last) first, then every height around
+  // the best coarse ones; each height's two lines are projected only when it is scored. Edges are
+  // computed only on the rows the coarse lines cross, with a few rows more above for the fine
+  // lines between them.
+  const CorridorRotation<double> r(g.pitch, g.yaw);
+  const RowProjector fast = ChooseRowProjector(camera.HasDistortion());
+  thread_local std::vector<uchar> thread_scored;
+  std::vector<uchar>& scored = thread_scored;  // 1 where a height's lines are projected.
+  scored.assign(count, 0);
+  for (size_t k = 0; k < count; k += kCoarseStride) scored[k] = 1;
+  scored[count - 1] = 1;
+  for (size_t k = 0; k < count; ++k) {
+    if (scored[k]) ProjectHeight(camera, g, r, fast, k, &lines);
+  }
   if (lines.bottom < lines.top) {
     estimate->reason = "no ceiling/wall junction follows the image's edges";
     return Status::Ok();
   }
-  const OrientedEdges edges = ComputeOrientedEdges(bgr, lines.top - 2, lines.bottom + 3, shared);
+  // The lowest height's lines (coarse) are the lowest: the band's bottom, and with it how far
+  // down the shared edges are computed, are those of every line.
+  const OrientedEdges edges =
+      ComputeOrientedEdges(bgr, lines.top - 2 - kFineRows, lines.bottom + 3, shared);
   const int band_top = edges.top, band_bottom = edges.top + edges.edges.rows;
+  thread_local std::vector<LineHits> thread_hits;
+  std::vector<LineHits>& all_hits = thread_hits;  // [2 k + side], where scored.
+  all_hits.resize(2 * count);
+  const auto score_height = [&](size_t k) {
+    for (int side = 0; side < 2; ++side) {
+      all_hits[2 * k + side] = OrientedLineHits(lines.Line(k, side), lines.samples, edges);
+    }
+  };
+  const auto support = [&](size_t k, int side) {
+    return all_hits[2 * k + side].Fraction(lines.samples / 2);
+  };
+  for (size_t k = 0; k < count; ++k) {
+    if (scored[k]) score_height(k);
+  }
+  // Around the coarse heights with the kRefined best sums and the kRefined best supports of each
+  // side: every height within a stride, projected and scored.
+  TopHeights best_sums, best_sides[2];
+  for (size_t k = 0; k < count; ++k) {
+    if (!scored[k]) continue;
+    const double left = support(k, 0), right = support(k, 1);
+    best_sums.Offer(left + right, k);
+    best_sides[0].Offer(left, k);
+    best_sides[1].Offer(right, k);
+  }
+  size_t around[3 * kRefined];
+  int arounds = 0;
+  for (const TopHeights* top : {&best_sums, &best_sides[0], &best_sides[1]}) {
+    for (int j = 0; j < top->size; ++j) around[arounds++] = top->at[j];
+  }
+  const auto score_new = [&](size_t k) {
+    scored[k] = 1;
+    const int top = lines.top, bottom = lines.bottom;  // The band is set: rows not widened.
+    ProjectHeight(camera, g, r, fast, k, &lines);
+    lines.top = top;
+    lines.bottom = bottom;
+    score_height(k);
+  };
+  for (int j = 0; j < arounds; ++j) {
+    const size_t from = around[j] >= kCoarseStride ? around[j] - kCoarseStride + 1 : 0;
+    const size_t to = std::min(count, around[j] + kCoarseStride);
+    for (size_t k = from; k < to; ++k) {
+      if (!scored[k]) score_new(k);
+    }
+  }
+  // Then the neighbours of the best sum and of each side's best, until both neighbours of each
+  // are scored: a best on a plateau or a slope that leaves the windows is followed along it.
+  for (bool grew = true; grew;) {
+    grew = false;
+    size_t best_at[3] = {0, 0, 0};
+    double best_value[3] = {0, 0, 0};
+    for (size_t k = 0; k < count; ++k) {
+      if (!scored[k]) continue;
+      const double left = support(k, 0), right = support(k, 1);
+      const double values[3] = {left + right, left, right};
+      for (int c = 0; c < 3; ++c) {
+        if (values[c] > best_value[c]) best_value[c] = values[c], best_at[c] = k;
+      }
+    }
+    for (int c = 0; c < 3; ++c) {
+      if (!(best_value[c] > 0)) continue;
+      for (const size_t k : {best_at[c] - 1, best_at[c] + 1}) {
+        if (k >= count || scored[k]) continue;  // best_at - 1 wraps past count at 0.
+        score_new(k);
+        grew = true;
+      }
+    }
+  }
 
+  // The best height of those scored, as if every height had been: the first of the highest sum,
+  // and each side's first of its highest support.
   double best_score = 0;
   size_t best = 0;
   LineHits best_hits[2], side_hits[2];
-  for (size_t k = 0; k < lines.heights.size(); ++k) {
-    const LineHits hits[2] = {OrientedLineHits(lines.Line(k, 0), lines.samples, edges),
-                              OrientedLineHits(lines.Line(k, 1), lines.samples, edges)};
-    const double support[2] = {hits[0].Fraction(lines.samples / 2),
-                               hits[1].Fraction(lines.samples / 2)};
+  for (size_t k = 0; k < count; ++k) {
+    if (!scored[k]) continue;
+    const double sides[2] = {support(k, 0), support(k, 1)};
     for (int side = 0; side < 2; ++side) {
-      if (support[side] > estimate->side_support[side]) {
-        estimate->side_support[side] = support[side];
+      if (sides[side] > estimate->side_support[side]) {
+        estimate->side_support[side] = sides[side];
         estimate->side_height[side] = lines.heights[k];
-        side_hits[side] = hits[side];
+        side_hits[side] = all_hits[2 * k + side];
       }
     }
-    const double score = support[0] + support[1];
+    const double score = sides[0] + sides[1];
     if (score > best_score) {
       best_score = score;
       best = k;
-      best_hits[0] = hits[0];
-      best_hits[1] = hits[1];
+      best_hits[0] = all_hits[2 * k];
+      best_hits[1] = all_hits[2 * k + 1];
     }
   }
   // The search above compares heights by the fraction of at least half the samples; whether the
@@ -251,7 +373,6 @@ Status DetectCeiling(const cv::Mat& bgr, const Camera& camera, const CorridorGeo
     return Status::Ok();
   }
   // Refine: every edge pixel within 2 px of an accepted line gives H_c from its ray and wall.
-  const CorridorRotation<double> r(g.pitch, g.yaw);
   const double h = g.camera_height;
   // In the thread's buffer, which keeps its memory from search to search.
   thread_local std::vector<double> thread_heights;

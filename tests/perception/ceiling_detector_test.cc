@@ -2,6 +2,7 @@
 // true ceiling height; and no ceiling where the image shows none.
 #include "perception/ceiling_detector.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -39,6 +40,55 @@ TEST(CeilingDetectorTest, FindsTheCeilingHeightOfGeneratedCorridors) {
                     .ok());
     ASSERT_TRUE(again.found) << preset.name << ": " << again.reason;
     EXPECT_NEAR(again.height, estimate.height, 0.01) << preset.name;
+    ++checked;
+  }
+  EXPECT_EQ(checked, 6);
+}
+
+// The search scores every fourth height first and then the heights around the best ones: it
+// must find the same best support, per side and for the two sides together, as scoring every
+// height does (each height searched alone, on the same shared edges).
+TEST(CeilingDetectorTest, CoarseToFineFindsTheBestOfEveryHeight) {
+  int checked = 0;
+  for (const auto& preset : synth::PaperPreset()) {
+    if (preset.name.find("_E") == std::string::npos) continue;
+    const synth::CorridorScene scene = synth::BuildScene(preset.scene);
+    synth::Frame frame;
+    ASSERT_TRUE(synth::RenderFrame(scene, preset.camera, preset.poses[4], &frame).ok());
+    ImageEdges shared;
+    ASSERT_TRUE(ComputeImageEdges(frame.bgr, &shared));
+    const CeilingDetectorOptions options;
+    CeilingEstimate estimate;
+    ASSERT_TRUE(
+        DetectCeiling(frame.bgr, preset.camera, frame.truth, options, &estimate, &shared).ok());
+    double best_side[2] = {0, 0}, best_sum = 0;
+    CeilingEstimate best_alone;  // The height of the best sum, searched alone.
+    int heights = 0;
+    const double lo = std::max(options.min_height, frame.truth.camera_height + 0.1);
+    for (double height = lo; height <= options.max_height; height += options.step, ++heights) {
+      CeilingDetectorOptions one = options;
+      one.min_height = height;
+      one.max_height = height + 0.5 * options.step;
+      CeilingEstimate alone;
+      ASSERT_TRUE(
+          DetectCeiling(frame.bgr, preset.camera, frame.truth, one, &alone, &shared).ok());
+      for (int side = 0; side < 2; ++side) {
+        best_side[side] = std::max(best_side[side], alone.side_support[side]);
+      }
+      const double sum = alone.side_support[0] + alone.side_support[1];
+      if (sum > best_sum) best_sum = sum, best_alone = alone;
+    }
+    ASSERT_GT(heights, 100);
+    for (int side = 0; side < 2; ++side) {
+      EXPECT_DOUBLE_EQ(estimate.side_support[side], best_side[side]) << preset.name;
+    }
+    // The chosen lines are those of the best sum (the first, as every height in turn keeps it):
+    // the same supports on the samples in view, and the same estimate from the edge pixels near
+    // them.
+    ASSERT_GT(best_sum, 0) << preset.name;
+    EXPECT_DOUBLE_EQ(estimate.left_support, best_alone.left_support) << preset.name;
+    EXPECT_DOUBLE_EQ(estimate.right_support, best_alone.right_support) << preset.name;
+    EXPECT_DOUBLE_EQ(estimate.height, best_alone.height) << preset.name;
     ++checked;
   }
   EXPECT_EQ(checked, 6);
