@@ -45,7 +45,7 @@ TEST(CeilingDetectorTest, FindsTheCeilingHeightOfGeneratedCorridors) {
   EXPECT_EQ(checked, 6);
 }
 
-// The search scores every fourth height first and then the heights around the best ones: it
+// The search scores every third height first and then the heights around the best ones: it
 // must find the same best support, per side and for the two sides together, as scoring every
 // height does (each height searched alone, on the same shared edges).
 TEST(CeilingDetectorTest, CoarseToFineFindsTheBestOfEveryHeight) {
