@@ -4,6 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <opencv2/imgproc.hpp>
@@ -15,13 +18,30 @@
 namespace corridor {
 namespace {
 
-TEST(CeilingDetectorTest, FindsTheCeilingHeightOfGeneratedCorridors) {
-  int checked = 0;
+// The paper preset's six end-wall scenes, each with its fifth frame rendered.
+struct EndWallFrame {
+  synth::ScenePreset preset;
+  synth::Frame frame;
+};
+std::vector<EndWallFrame> PaperEndWallFrames() {
+  std::vector<EndWallFrame> out;
   for (const auto& preset : synth::PaperPreset()) {
     if (preset.name.find("_E") == std::string::npos) continue;
+    EndWallFrame f{preset, synth::Frame()};
     const synth::CorridorScene scene = synth::BuildScene(preset.scene);
-    synth::Frame frame;
-    ASSERT_TRUE(synth::RenderFrame(scene, preset.camera, preset.poses[4], &frame).ok());
+    EXPECT_TRUE(synth::RenderFrame(scene, preset.camera, preset.poses[4], &f.frame).ok())
+        << preset.name;
+    out.push_back(std::move(f));
+  }
+  return out;
+}
+
+TEST(CeilingDetectorTest, FindsTheCeilingHeightOfGeneratedCorridors) {
+  int checked = 0;
+  for (const EndWallFrame& f : PaperEndWallFrames()) {
+    const synth::ScenePreset& preset = f.preset;
+    const synth::Frame& frame = f.frame;
+    ASSERT_FALSE(frame.bgr.empty()) << preset.name;
     CeilingEstimate estimate;
     ASSERT_TRUE(
         DetectCeiling(frame.bgr, preset.camera, frame.truth, CeilingDetectorOptions(), &estimate)
@@ -50,11 +70,10 @@ TEST(CeilingDetectorTest, FindsTheCeilingHeightOfGeneratedCorridors) {
 // height does (each height searched alone, on the same shared edges).
 TEST(CeilingDetectorTest, CoarseToFineFindsTheBestOfEveryHeight) {
   int checked = 0;
-  for (const auto& preset : synth::PaperPreset()) {
-    if (preset.name.find("_E") == std::string::npos) continue;
-    const synth::CorridorScene scene = synth::BuildScene(preset.scene);
-    synth::Frame frame;
-    ASSERT_TRUE(synth::RenderFrame(scene, preset.camera, preset.poses[4], &frame).ok());
+  for (const EndWallFrame& f : PaperEndWallFrames()) {
+    const synth::ScenePreset& preset = f.preset;
+    const synth::Frame& frame = f.frame;
+    ASSERT_FALSE(frame.bgr.empty()) << preset.name;
     ImageEdges shared;
     ASSERT_TRUE(ComputeImageEdges(frame.bgr, &shared));
     const CeilingDetectorOptions options;

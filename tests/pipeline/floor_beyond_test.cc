@@ -116,6 +116,7 @@ TEST(FloorBeyondTest, TheEndWallIsNotTheFloor) {
   EXPECT_GT(unknown.floor_across, 0.08);
 }
 
+using testing_util::ExpectOffThenRefused;
 using testing_util::PresetFrame;
 using testing_util::RenderPreset;
 
@@ -129,20 +130,12 @@ TEST(FloorBeyondTest, AnObjectsFrontTakenForTheWallIsRefused) {
   };
   for (const Case& c : {Case{"furniture", 4, 17, 1}, Case{"furniture", 9, 3, 0}}) {
     const PresetFrame f = RenderPreset(c.name, c.scene, c.index);
-    ASSERT_FALSE(f.frame.bgr.empty()) << c.name << " " << c.scene << " " << c.index;
-    RecoverDepthOptions options;
-    options.min_confidence = 0;
-    RecoverDepthResult result;
-    ASSERT_TRUE(RecoverDepth(f.frame.bgr, f.camera, options, &result).ok());
-    EXPECT_GT(std::abs(result.geometry.width - f.true_width) / f.true_width, 0.10)
-        << c.name << " " << c.scene << " " << c.index;
-    EXPECT_GT(result.evidence.floor_across[c.side], 0.35)
-        << c.name << " " << c.scene << " " << c.index;
-    const Status refused = RecoverDepth(f.frame.bgr, f.camera, RecoverDepthOptions(), &result);
-    EXPECT_EQ(refused.code(), StatusCode::kLowConfidence)
-        << c.name << " " << c.scene << " " << c.index;
-    EXPECT_NE(refused.message().find("the floor goes on across"), std::string::npos)
-        << refused.message();
+    const std::string label =
+        std::string(c.name) + " " + std::to_string(c.scene) + " " + std::to_string(c.index);
+    ASSERT_FALSE(f.frame.bgr.empty()) << label;
+    const RecoverDepthResult result =
+        ExpectOffThenRefused(f, 0.10, "the floor goes on across", label);
+    EXPECT_GT(result.evidence.floor_across[c.side], 0.35) << label;
   }
 }
 

@@ -16,6 +16,7 @@
 namespace corridor {
 namespace {
 
+using testing_util::ExpectOffThenRefused;
 using testing_util::PresetFrame;
 using testing_util::RenderPreset;
 
@@ -31,19 +32,13 @@ double WeakestJunction(const RecoverDepthResult& r) {
 TEST(WeakJunctionTest, AWallOnALineThatBoundsNoFloorIsRefused) {
   for (const Case& c : {Case{"mix", 9, 2}, Case{"mix", 7, 8}}) {
     const PresetFrame f = RenderPreset(c.name, c.scene, c.index);
-    ASSERT_FALSE(f.frame.bgr.empty()) << c.name << " " << c.scene << " " << c.index;
-    RecoverDepthOptions any;
-    any.min_confidence = 0;
-    RecoverDepthResult result;
-    ASSERT_TRUE(RecoverDepth(f.frame.bgr, f.camera, any, &result).ok());
-    EXPECT_GT(std::abs(result.geometry.width - f.true_width) / f.true_width, 0.10)
-        << c.name << " " << c.scene << " " << c.index;
-    EXPECT_LT(WeakestJunction(result), 0.03);
-    EXPECT_LT(result.evidence.ceiling_disagreement, 0);
-    const Status status = RecoverDepth(f.frame.bgr, f.camera, RecoverDepthOptions(), &result);
-    EXPECT_EQ(status.code(), StatusCode::kLowConfidence) << status.ToString();
-    EXPECT_NE(status.message().find("no ceiling confirms its wall"), std::string::npos)
-        << status.message();
+    const std::string label =
+        std::string(c.name) + " " + std::to_string(c.scene) + " " + std::to_string(c.index);
+    ASSERT_FALSE(f.frame.bgr.empty()) << label;
+    const RecoverDepthResult result =
+        ExpectOffThenRefused(f, 0.10, "no ceiling confirms its wall", label);
+    EXPECT_LT(WeakestJunction(result), 0.03) << label;
+    EXPECT_LT(result.evidence.ceiling_disagreement, 0) << label;
   }
 }
 

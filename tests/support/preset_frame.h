@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include <gtest/gtest.h>
+
 #include "corridor_depth/camera.h"
 #include "corridor_depth/recover_depth.h"
 #include "synth/corridor_renderer.h"
@@ -51,6 +53,26 @@ inline double RecoveredWidthError(const PresetFrame& f, const RecoverDepthOption
   RecoverDepthResult result;
   if (!RecoverDepth(f.frame.bgr, f.camera, options, &result).ok()) return std::nan("");
   return std::abs(result.geometry.width - f.true_width) / f.true_width;
+}
+
+// Recovers `f` with no confidence bar, expecting a width more than `off` (relative) from the true
+// one, then with the default options, expecting a refusal for low confidence whose message
+// contains `because`; `label` names the frame in failures. Returns the unbarred result, for the
+// caller's checks of its evidence.
+inline RecoverDepthResult ExpectOffThenRefused(const PresetFrame& f, double off,
+                                               const std::string& because,
+                                               const std::string& label) {
+  RecoverDepthOptions unbarred;
+  unbarred.min_confidence = 0;
+  RecoverDepthResult result;
+  EXPECT_TRUE(RecoverDepth(f.frame.bgr, f.camera, unbarred, &result).ok()) << label;
+  EXPECT_GT(std::abs(result.geometry.width - f.true_width) / f.true_width, off) << label;
+  RecoverDepthResult refused;
+  const Status status = RecoverDepth(f.frame.bgr, f.camera, RecoverDepthOptions(), &refused);
+  EXPECT_EQ(status.code(), StatusCode::kLowConfidence) << label << ": " << status.ToString();
+  EXPECT_NE(status.message().find(because), std::string::npos) << label << ": "
+                                                               << status.message();
+  return result;
 }
 
 }  // namespace testing_util
