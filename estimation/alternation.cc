@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
+
+#include "estimation/junction_trim.h"
 
 namespace corridor {
 namespace {
@@ -18,11 +21,42 @@ double LowestValidPitch(const CorridorObservation& observation) {
   return std::atan(-highest) + kMargin;
 }
 
+// The robust standard deviation of a stage's residuals at x (each scaled by the square root of
+// its point's weight, with no loss): 1.4826 times their median absolute value. False when the
+// functor cannot be evaluated there.
+template <typename Functor>
+bool StageSigma(const Functor& plain, const double x[2], double* sigma) {
+  thread_local std::vector<double> thread_residuals;
+  std::vector<double>& residuals = thread_residuals;
+  residuals.resize(plain.NumResiduals());
+  if (residuals.empty() || !plain(x, residuals.data())) return false;
+  for (double& r : residuals) {
+    if (!std::isfinite(r)) return false;
+    r = std::abs(r);
+  }
+  const size_t mid = residuals.size() / 2;
+  std::nth_element(residuals.begin(), residuals.begin() + mid, residuals.end());
+  *sigma = 1.4826 * residuals[mid];
+  return true;
+}
+
+// The loss of a stage starting at x: of scale loss_sigmas robust standard deviations of the plain
+// functor's residuals there, or the fixed `fixed` when loss_sigmas is 0 or they cannot be had.
+template <typename Functor>
+ResidualLoss StageLoss(const Functor& plain, const double x[2], double loss_sigmas,
+                       const ResidualLoss& fixed) {
+  double sigma = 0;
+  if (!(loss_sigmas > 0) || !StageSigma(plain, x, &sigma)) return fixed;
+  ResidualLoss loss = fixed;
+  loss.scale = loss_sigmas * std::max(sigma, kMinSigmaPx);
+  return loss;
+}
+
 }  // namespace
 
 Status RunAlternation(const CorridorObservation& observation, const CorridorGeometry* initial,
                       const SolverOptions& options, const StageMinimizer& minimizer,
-                      SolverSummary* summary) {
+                      SolverSummary* summary, bool scale_loss_to_residuals) {
   std::string why;
   if (!observation.Check(&why)) return Status::InvalidArgument(why);
   const FloorIntrinsics k{observation.fx, observation.fy, observation.cx, observation.cy,
@@ -41,7 +75,14 @@ Status RunAlternation(const CorridorObservation& observation, const CorridorGeom
   for (int round = 0; round < options.max_rounds; ++round) {
     const double before[4] = {yaw, offset, pitch, width};
     double x1[2] = {yaw, offset};
-    const SymmetryResidual symmetry(k, pitch, observation.left, observation.right, loss,
+    const double loss_sigmas = scale_loss_to_residuals ? options.loss_sigmas : 0.0;
+    const ResidualLoss symmetry_loss =
+        loss_sigmas > 0 ? StageLoss(SymmetryResidual(k, pitch, observation.left, observation.right,
+                                                     ResidualLoss(), observation.left_weights,
+                                                     observation.right_weights),
+                                    x1, loss_sigmas, loss)
+                        : loss;
+    const SymmetryResidual symmetry(k, pitch, observation.left, observation.right, symmetry_loss,
                                     observation.left_weights, observation.right_weights);
     if (!minimizer.MinimizeSymmetry(symmetry, x1, &summary->final_cost, &summary->evaluations)) {
       return Status::ImplausibleGeometry(
@@ -50,7 +91,14 @@ Status RunAlternation(const CorridorObservation& observation, const CorridorGeom
     yaw = x1[0];
     offset = x1[1];
     double x2[2] = {pitch, width};
-    const WidthResidual distance(k, yaw, offset, observation.left, observation.right, loss,
+    const ResidualLoss width_loss =
+        loss_sigmas > 0 ? StageLoss(WidthResidual(k, yaw, offset, observation.left,
+                                                  observation.right, ResidualLoss(),
+                                                  observation.left_weights,
+                                                  observation.right_weights),
+                                    x2, loss_sigmas, loss)
+                        : loss;
+    const WidthResidual distance(k, yaw, offset, observation.left, observation.right, width_loss,
                                  observation.left_weights, observation.right_weights);
     if (!minimizer.MinimizeWidth(distance, x2, &summary->final_cost, &summary->evaluations)) {
       return Status::ImplausibleGeometry(

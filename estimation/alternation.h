@@ -27,9 +27,12 @@ class StageMinimizer {
 
 // The paper's alternation (docs/geometry.md, section 5): start from `initial` (or the options'
 // pitch prior), solve stage 1 (yaw, offset), then stage 2 (pitch, width), until nothing moves.
+// With scale_loss_to_residuals, each stage's loss has the scale of options.loss_sigmas robust
+// standard deviations of that stage's residuals at its start (SolverOptions::loss_sigmas); else
+// the fixed options.loss_scale.
 Status RunAlternation(const CorridorObservation& observation, const CorridorGeometry* initial,
                       const SolverOptions& options, const StageMinimizer& minimizer,
-                      SolverSummary* summary);
+                      SolverSummary* summary, bool scale_loss_to_residuals = false);
 
 // Evaluates a stage functor at x; +infinity when the functor rejects x.
 template <typename Functor>

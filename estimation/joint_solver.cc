@@ -9,6 +9,7 @@
 #include "estimation/bounded_lm.h"
 #include "estimation/closed_form.h"
 #include "estimation/junction_line_residual.h"
+#include "estimation/junction_trim.h"
 
 namespace corridor {
 namespace {
@@ -63,51 +64,16 @@ class JunctionResiduals {
   mutable Vec3<Jet> jet_lines_[2] = {};
 };
 
-// Each side's points within trim_sigmas robust standard deviations of the lines of x (at least
-// kMinTrimPx), into *kept (whose vectors keep their memory) with their weights and *mask (1 =
-// kept, the left side's points then the right's). Distances are weighted (sqrt(w) |r|, in units
-// of one point of average noise). False, keeping nothing, when a side would keep fewer than two
-// points.
-bool TrimToFit(const CorridorObservation& all, const FloorIntrinsics& intrinsics, const double x[4],
-               double trim_sigmas, CorridorObservation* kept, std::vector<char>* mask) {
-  constexpr double kMinTrimPx = 1.0;
-  thread_local std::vector<double> thread_distance, thread_sorted;
-  std::vector<double>& distance = thread_distance;
-  std::vector<double>& sorted = thread_sorted;
-  mask->clear();
-  kept->left.clear();
-  kept->right.clear();
-  kept->left_weights.clear();
-  kept->right_weights.clear();
-  for (int side = -1; side <= 1; side += 2) {
-    const std::vector<Eigen::Vector2d>& points = side < 0 ? all.left : all.right;
-    Vec3<double> line;
-    if (!JunctionLineResidual::ScaledLine(intrinsics, x, side, &line)) return false;
-    distance.clear();
-    for (const auto& p : points) {
-      const double r = JunctionLineResidual::Distance(intrinsics, line, p.x(), p.y());
-      if (!std::isfinite(r)) return false;
-      distance.push_back(std::abs(r) * std::sqrt(all.Weight(side, distance.size())));
-    }
-    sorted.assign(distance.begin(), distance.end());
-    const size_t mid = sorted.size() / 2;
-    std::nth_element(sorted.begin(), sorted.begin() + mid, sorted.end());
-    const double threshold = std::max(trim_sigmas * 1.4826 * sorted[mid], kMinTrimPx);
-    std::vector<Eigen::Vector2d>& out = side < 0 ? kept->left : kept->right;
-    std::vector<double>& out_weights = side < 0 ? kept->left_weights : kept->right_weights;
-    const bool weighted = !(side < 0 ? all.left_weights : all.right_weights).empty();
-    int positive = 0;
-    for (size_t i = 0; i < points.size(); ++i) {
-      const bool keep = distance[i] <= threshold;
-      mask->push_back(keep ? 1 : 0);
-      if (!keep) continue;
-      out.push_back(points[i]);
-      if (weighted) out_weights.push_back(all.Weight(side, i));
-      positive += all.Weight(side, i) > 0 ? 1 : 0;
-    }
-    if (positive < 2) return false;
+// The loss for a solve starting at x: of scale options.loss_sigmas robust standard deviations of
+// the points' distances there, both sides pooled (at least kMinSigmaPx, a guard for points without
+// spread), or of the fixed options.loss_scale.
+RobustLoss LossAt(const SolverOptions& options, const CorridorObservation& observation,
+                  const FloorIntrinsics& intrinsics, const double x[4]) {
+  double sigma = 0;
+  if (options.loss_sigmas > 0 && RobustSigma(observation, intrinsics, x, 0, &sigma)) {
+    return RobustLoss::FromName(options.loss, options.loss_sigmas * std::max(sigma, kMinSigmaPx));
   }
-  return true;
+  return RobustLoss::FromName(options.loss, options.loss_scale);
 }
 
 }  // namespace
@@ -139,9 +105,9 @@ Status JointSolver::Solve(const CorridorObservation& observation, const Corridor
   lm_options.function_tolerance = lm.function_tolerance;
   lm_options.parameter_tolerance = lm.parameter_tolerance;
   lm_options.gradient_tolerance = lm.gradient_tolerance;
-  lm_options.loss = RobustLoss::FromName(options_.loss, options_.loss_scale);
   const FloorIntrinsics intrinsics{observation.fx, observation.fy, observation.cx, observation.cy,
                                    observation.camera_height};
+  lm_options.loss = LossAt(options_, observation, intrinsics, x);
   BoundedLmSummary lm_summary =
       SolveBoundedLm<4>(JunctionResiduals(observation, intrinsics), lm_options, lower, upper, x);
   summary->evaluations = lm_summary.residual_evaluations;
@@ -164,12 +130,8 @@ Status JointSolver::Solve(const CorridorObservation& observation, const Corridor
       break;
     }
     previous.swap(mask);
-    kept.fx = observation.fx;
-    kept.fy = observation.fy;
-    kept.cx = observation.cx;
-    kept.cy = observation.cy;
-    kept.camera_height = observation.camera_height;
     double refit[4] = {x[0], x[1], x[2], x[3]};
+    lm_options.loss = LossAt(options_, observation, intrinsics, x);
     const BoundedLmSummary trimmed =
         SolveBoundedLm<4>(JunctionResiduals(kept, intrinsics), lm_options, lower, upper, refit);
     summary->evaluations += trimmed.residual_evaluations;

@@ -1,11 +1,13 @@
 #include "estimation/lm_solver.h"
 
 #include <chrono>
+#include <vector>
 
 #include <ceres/ceres.h>
 
 #include "estimation/alternation.h"
 #include "estimation/closed_form.h"
+#include "estimation/junction_trim.h"
 #include "estimation/ceres_options.h"
 
 namespace corridor {
@@ -73,19 +75,56 @@ Status LmSolver::Solve(const CorridorObservation& observation, const CorridorGeo
   if (initial == nullptr && options_.lm.start_from_closed_form &&
       SolveClosedForm(observation, &closed_form).ok()) {
     status = RunAlternation(observation, &closed_form, options_, LmStageMinimizer(options_.lm),
-                            summary);
+                            summary, /*scale_loss_to_residuals=*/true);
     solved = status.ok();
   }
   if (!solved) {
     const int evaluations = summary->evaluations;
     *summary = SolverSummary();
     summary->solver_name = Name();
-    status = RunAlternation(observation, initial, options_, LmStageMinimizer(options_.lm), summary);
+    status = RunAlternation(observation, initial, options_, LmStageMinimizer(options_.lm), summary,
+                            /*scale_loss_to_residuals=*/true);
     summary->evaluations += evaluations;
   }
+  if (status.ok()) TrimAndRefit(observation, summary);
   summary->seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return status;
+}
+
+void LmSolver::TrimAndRefit(const CorridorObservation& observation, SolverSummary* summary) const {
+  // As the joint solver: refit on the points near the fit's junction lines, chosen again from all
+  // points at each new fit, until they repeat. A point is judged by its distance from its line in
+  // the image, which neither stage's residual alone measures. The thread's, reused from call to
+  // call.
+  thread_local CorridorObservation thread_kept;
+  thread_local std::vector<char> thread_mask, thread_previous;
+  CorridorObservation& kept = thread_kept;
+  std::vector<char>& mask = thread_mask;
+  std::vector<char>& previous = thread_previous;
+  previous.assign(observation.left.size() + observation.right.size(), 1);
+  const FloorIntrinsics intrinsics{observation.fx, observation.fy, observation.cx, observation.cy,
+                                   observation.camera_height};
+  constexpr int kMaxTrimRounds = 3;
+  for (int round = 0; options_.trim_sigmas > 0 && round < kMaxTrimRounds; ++round) {
+    const CorridorGeometry fit = summary->estimate;
+    const double x[4] = {fit.yaw, fit.pitch, fit.offset, fit.width};
+    if (!TrimToFit(observation, intrinsics, x, options_.trim_sigmas, &kept, &mask) ||
+        mask == previous) {
+      break;
+    }
+    previous.swap(mask);
+    SolverSummary refit;
+    if (!RunAlternation(kept, &fit, options_, LmStageMinimizer(options_.lm), &refit,
+                        /*scale_loss_to_residuals=*/true)
+             .ok()) {
+      break;
+    }
+    refit.evaluations += summary->evaluations;
+    refit.iterations += summary->iterations;
+    refit.solver_name = summary->solver_name;
+    *summary = refit;
+  }
 }
 
 }  // namespace corridor

@@ -59,13 +59,21 @@ struct LmOptions {
 // Options shared by every solver.
 struct SolverOptions {
   std::string loss = "huber";  // Robust loss inside both functors: "none", "huber", "cauchy".
-  double loss_scale = 2.0;     // Loss scale, pixels.
-  // "joint": after the fit, each side's points farther from their fitted line than trim_sigmas
-  // robust standard deviations (1.4826 times the median distance of that side's points, and at
-  // least 1 px) are dropped and the fit repeated from there, until the kept points stop changing;
-  // 0 = no trimming. The scale comes from the points' own spread, so that a second line's points
+  double loss_scale = 2.0;     // Loss scale, pixels ("grid"; "joint" and "lm" with loss_sigmas 0).
+  // "joint" and "lm": after the fit, each side's points farther from their fitted line than
+  // trim_sigmas robust standard deviations (1.4826 times the median distance of that side's
+  // points, at least a thousandth of a pixel) are dropped and the fit repeated from there, until
+  // the kept points stop changing; 0 = no trimming. The scale comes from the points' own spread, so that a second line's points
   // mixed into a junction's are dropped where a fixed loss scale would still be pulled by them.
   double trim_sigmas = 3.0;
+  // "joint" and "lm": the robust loss's scale is loss_sigmas robust standard deviations of the
+  // residuals themselves (1.4826 times their median absolute value, at each solve's start: the
+  // closed form's, then each fit's), instead of the fixed loss_scale; 0 = loss_scale. 1.345 is
+  // Huber's constant (95% of least squares' efficiency on Gaussian noise). Edge points are placed
+  // to a tenth of a pixel, so a fixed scale of pixels would treat as inliers the points of a
+  // second edge a pixel away; points sampled on fitted lines have no spread, and any scale keeps
+  // their exact fit.
+  double loss_sigmas = 1.345;
   int max_rounds = 20;            // Alternation rounds of stage 1 then stage 2 (grid, lm).
   double round_tolerance = 1e-6;  // Stop alternating when no parameter moves more than this.
   double initial_pitch = 0.0;     // Pitch prior theta_0 when no initial estimate is given, rad.

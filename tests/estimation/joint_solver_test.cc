@@ -77,11 +77,13 @@ CorridorObservation NoisyObservation(const CorridorGeometry& truth, double sigma
 // The solve and the reference agree: parameters to 1e-6 (both stop within the LM tolerances of
 // the same minimum, so only round-off separates them), the same convergence flag, iteration and
 // residual-evaluation counts and final cost.
-// Ceres solves the one problem on all points: the joint solver's trimming is off.
+// Ceres solves the one problem on all points with the fixed loss scale: the joint solver's
+// trimming and its loss scaled to the points' spread are off.
 void ExpectSameAsCeres(const CorridorObservation& obs, const SolverOptions& trimmed_options,
                        const CorridorGeometry& start, const std::string& what) {
   SolverOptions options = trimmed_options;
   options.trim_sigmas = 0;
+  options.loss_sigmas = 0;
   const Reference ref = CeresSolve(obs, options, start);
   ASSERT_TRUE(ref.summary.IsSolutionUsable()) << what << ": " << ref.summary.message;
   SolverSummary summary;

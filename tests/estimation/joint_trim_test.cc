@@ -55,8 +55,9 @@ TEST(JointTrimTest, ASecondLinesPointsAreDroppedAndTheWidthRecovered) {
   SolverOptions plain;
   plain.loss = "none";
   plain.trim_sigmas = 0;
-  SolverOptions huber;  // the default loss and scale, no trimming
+  SolverOptions huber;  // the default loss at the fixed scale, no trimming
   huber.trim_sigmas = 0;
+  huber.loss_sigmas = 0;
   const SolverOptions trimmed;  // the defaults: Huber, then trimming
   ASSERT_GT(trimmed.trim_sigmas, 0);
   unsigned seed = 1;
