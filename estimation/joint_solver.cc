@@ -115,12 +115,10 @@ Status JointSolver::Solve(const CorridorObservation& observation, const Corridor
   // Trimming: refit on the points near the fit's lines, which are chosen again from all points at
   // each new fit (a point dropped by a fit pulled off by others may come back), until they repeat.
   // The thread's, reused from call to call.
-  thread_local CorridorObservation thread_kept;
-  thread_local std::vector<char> thread_mask, thread_previous;
-  CorridorObservation& kept = thread_kept;
-  std::vector<char>& mask = thread_mask;
-  std::vector<char>& previous = thread_previous;
-  previous.assign(observation.left.size() + observation.right.size(), 1);
+  TrimBuffers& buffers = ThreadTrimBuffers(observation.left.size() + observation.right.size());
+  CorridorObservation& kept = buffers.kept;
+  std::vector<char>& mask = buffers.mask;
+  std::vector<char>& previous = buffers.previous;
   constexpr int kMaxTrimRounds = 3;
   for (int round = 0; options_.trim_sigmas > 0 && round < kMaxTrimRounds &&
                       lm_summary.termination != BoundedLmSummary::Termination::kFailure;

@@ -53,6 +53,12 @@ bool TrimToFit(const CorridorObservation& all, const FloorIntrinsics& intrinsics
   return true;
 }
 
+TrimBuffers& ThreadTrimBuffers(size_t points) {
+  thread_local TrimBuffers buffers;
+  buffers.previous.assign(points, 1);
+  return buffers;
+}
+
 bool RobustSigma(const CorridorObservation& observation, const FloorIntrinsics& intrinsics,
                  const double x[4], int which, double* sigma) {
   thread_local std::vector<double> thread_distance;

@@ -4,6 +4,7 @@
 // without the others (SolverOptions::trim_sigmas), and the points' robust spread about those lines
 // (SolverOptions::loss_sigmas).
 
+#include <cstddef>
 #include <vector>
 
 #include "corridor_depth/corridor_observation.h"
@@ -23,6 +24,16 @@ constexpr double kMinSigmaPx = 1e-3;
 // keeping nothing, when a side would keep fewer than two points.
 bool TrimToFit(const CorridorObservation& all, const FloorIntrinsics& intrinsics, const double x[4],
                double trim_sigmas, CorridorObservation* kept, std::vector<char>* mask);
+
+// The buffers of a trimming loop (the kept points, this round's mask and the last round's), the
+// calling thread's, reused from call to call.
+struct TrimBuffers {
+  CorridorObservation kept;
+  std::vector<char> mask, previous;
+};
+
+// The thread's TrimBuffers, with `previous` set to keep all of `points` points.
+TrimBuffers& ThreadTrimBuffers(size_t points);
 
 // The robust standard deviation of the points' weighted distances (sqrt(w) |r|) from the lines
 // of x: 1.4826 times their median, over the left side's points (which < 0), the right's

@@ -97,12 +97,10 @@ void LmSolver::TrimAndRefit(const CorridorObservation& observation, SolverSummar
   // points at each new fit, until they repeat. A point is judged by its distance from its line in
   // the image, which neither stage's residual alone measures. The thread's, reused from call to
   // call.
-  thread_local CorridorObservation thread_kept;
-  thread_local std::vector<char> thread_mask, thread_previous;
-  CorridorObservation& kept = thread_kept;
-  std::vector<char>& mask = thread_mask;
-  std::vector<char>& previous = thread_previous;
-  previous.assign(observation.left.size() + observation.right.size(), 1);
+  TrimBuffers& buffers = ThreadTrimBuffers(observation.left.size() + observation.right.size());
+  CorridorObservation& kept = buffers.kept;
+  std::vector<char>& mask = buffers.mask;
+  std::vector<char>& previous = buffers.previous;
   const FloorIntrinsics intrinsics{observation.fx, observation.fy, observation.cx, observation.cy,
                                    observation.camera_height};
   constexpr int kMaxTrimRounds = 3;
