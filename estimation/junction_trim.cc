@@ -2,10 +2,37 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "estimation/junction_line_residual.h"
 
 namespace corridor {
+namespace {
+
+// Appends to *distance each of side's points' weighted distance (sqrt(w) |r|) from its junction
+// line of x; false when the line is at infinity or a distance is not finite.
+bool AppendWeightedDistances(const CorridorObservation& observation,
+                             const FloorIntrinsics& intrinsics, const double x[4], int side,
+                             std::vector<double>* distance) {
+  const std::vector<Eigen::Vector2d>& points = side < 0 ? observation.left : observation.right;
+  Vec3<double> line;
+  if (!JunctionLineResidual::ScaledLine(intrinsics, x, side, &line)) return false;
+  for (size_t i = 0; i < points.size(); ++i) {
+    const double r = JunctionLineResidual::Distance(intrinsics, line, points[i].x(), points[i].y());
+    if (!std::isfinite(r)) return false;
+    distance->push_back(std::abs(r) * std::sqrt(observation.Weight(side, i)));
+  }
+  return true;
+}
+
+// 1.4826 times the median of `values` (reordered; not empty): their robust standard deviation.
+double RobustSpread(std::vector<double>* values) {
+  const size_t mid = values->size() / 2;
+  std::nth_element(values->begin(), values->begin() + mid, values->end());
+  return 1.4826 * (*values)[mid];
+}
+
+}  // namespace
 
 bool TrimToFit(const CorridorObservation& all, const FloorIntrinsics& intrinsics, const double x[4],
                double trim_sigmas, CorridorObservation* kept, std::vector<char>* mask) {
@@ -24,18 +51,10 @@ bool TrimToFit(const CorridorObservation& all, const FloorIntrinsics& intrinsics
   kept->right_weights.clear();
   for (int side = -1; side <= 1; side += 2) {
     const std::vector<Eigen::Vector2d>& points = side < 0 ? all.left : all.right;
-    Vec3<double> line;
-    if (!JunctionLineResidual::ScaledLine(intrinsics, x, side, &line)) return false;
     distance.clear();
-    for (const auto& p : points) {
-      const double r = JunctionLineResidual::Distance(intrinsics, line, p.x(), p.y());
-      if (!std::isfinite(r)) return false;
-      distance.push_back(std::abs(r) * std::sqrt(all.Weight(side, distance.size())));
-    }
+    if (!AppendWeightedDistances(all, intrinsics, x, side, &distance)) return false;
     sorted.assign(distance.begin(), distance.end());
-    const size_t mid = sorted.size() / 2;
-    std::nth_element(sorted.begin(), sorted.begin() + mid, sorted.end());
-    const double threshold = trim_sigmas * std::max(1.4826 * sorted[mid], kMinSigmaPx);
+    const double threshold = trim_sigmas * std::max(RobustSpread(&sorted), kMinSigmaPx);
     std::vector<Eigen::Vector2d>& out = side < 0 ? kept->left : kept->right;
     std::vector<double>& out_weights = side < 0 ? kept->left_weights : kept->right_weights;
     const bool weighted = !(side < 0 ? all.left_weights : all.right_weights).empty();
@@ -66,19 +85,10 @@ bool RobustSigma(const CorridorObservation& observation, const FloorIntrinsics& 
   distance.clear();
   for (int side = -1; side <= 1; side += 2) {
     if (which != 0 && side != which) continue;
-    const std::vector<Eigen::Vector2d>& points = side < 0 ? observation.left : observation.right;
-    Vec3<double> line;
-    if (!JunctionLineResidual::ScaledLine(intrinsics, x, side, &line)) return false;
-    for (size_t i = 0; i < points.size(); ++i) {
-      const double r = JunctionLineResidual::Distance(intrinsics, line, points[i].x(), points[i].y());
-      if (!std::isfinite(r)) return false;
-      distance.push_back(std::abs(r) * std::sqrt(observation.Weight(side, i)));
-    }
+    if (!AppendWeightedDistances(observation, intrinsics, x, side, &distance)) return false;
   }
   if (distance.empty()) return false;
-  const size_t mid = distance.size() / 2;
-  std::nth_element(distance.begin(), distance.begin() + mid, distance.end());
-  *sigma = 1.4826 * distance[mid];
+  *sigma = RobustSpread(&distance);
   return true;
 }
 

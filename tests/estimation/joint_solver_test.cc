@@ -2,6 +2,7 @@
 // AutoDiffCostFunction of JunctionLineResidual per edge point, the same loss and bounds, Ceres's
 // LM with the project's settings), which is the reference path.
 
+#include <vector>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -100,12 +101,7 @@ void ExpectSameAsCeres(const CorridorObservation& obs, const SolverOptions& trim
       << what;
 }
 
-const CorridorGeometry kTruths[] = {
-    MakeGeometry(0.0, 0.0, 0.0, 2.0, 0.66),
-    MakeGeometry(0.12, 0.06, 0.25, 2.4, 0.62),
-    MakeGeometry(-0.2, 0.1, -0.35, 3.1, 0.66),
-    MakeGeometry(0.05, -0.04, 0.1, 1.8, 0.62),
-};
+const std::vector<CorridorGeometry> kTruths = testing::ExampleCorridors(0.62);
 
 // Starts away from the truth, as the closed form or the previous frame would give.
 CorridorGeometry Perturbed(const CorridorGeometry& g, int i) {

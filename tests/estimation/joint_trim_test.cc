@@ -3,6 +3,7 @@
 // far beyond the side's own spread recovers it. Truth: the hand-set geometry, its points projected
 // with Eigen's rotations (tests/support/exact_observation.h), not with the solver's.
 
+#include <vector>
 #include <cmath>
 #include <random>
 
@@ -44,12 +45,7 @@ double WidthError(const SolverOptions& options, const CorridorObservation& obs,
   return std::abs(summary.estimate.width - truth.width) / truth.width;
 }
 
-const CorridorGeometry kTruths[] = {
-    MakeGeometry(0.0, 0.0, 0.0, 2.0, 0.66),
-    MakeGeometry(0.12, 0.06, 0.25, 2.4, 0.62),
-    MakeGeometry(-0.2, 0.1, -0.35, 3.1, 0.66),
-    MakeGeometry(0.05, -0.04, 0.1, 1.8, 1.2),
-};
+const std::vector<CorridorGeometry> kTruths = testing::ExampleCorridors(1.2);
 
 TEST(JointTrimTest, ASecondLinesPointsAreDroppedAndTheWidthRecovered) {
   SolverOptions plain;

@@ -5,6 +5,7 @@
 // the hand-set geometry, its points projected with Eigen's rotations
 // (tests/support/exact_observation.h), not with the solvers'; the spreads are hand-computed.
 
+#include <vector>
 #include <cmath>
 #include <random>
 
@@ -18,14 +19,8 @@ namespace corridor {
 namespace {
 
 using testing::ExactObservation;
-using testing::MakeGeometry;
 
-const CorridorGeometry kTruths[] = {
-    MakeGeometry(0.0, 0.0, 0.0, 2.0, 0.66),
-    MakeGeometry(0.12, 0.06, 0.25, 2.4, 0.62),
-    MakeGeometry(-0.2, 0.1, -0.35, 3.1, 0.66),
-    MakeGeometry(0.05, -0.04, 0.1, 1.8, 1.2),
-};
+const std::vector<CorridorGeometry> kTruths = testing::ExampleCorridors(1.2);
 
 // The unit normal of the image line through a side's exact points (from its end points).
 Eigen::Vector2d Normal(const std::vector<Eigen::Vector2d>& points) {

@@ -1,5 +1,6 @@
 #include "corridor_depth/solver.h"
 
+#include <vector>
 #include <random>
 
 #include <gtest/gtest.h>
@@ -12,12 +13,7 @@ namespace {
 using testing::ExactObservation;
 using testing::MakeGeometry;
 
-const CorridorGeometry kTruths[] = {
-    MakeGeometry(0.0, 0.0, 0.0, 2.0, 0.66),
-    MakeGeometry(0.12, 0.06, 0.25, 2.4, 0.62),
-    MakeGeometry(-0.2, 0.1, -0.35, 3.1, 0.66),
-    MakeGeometry(0.05, -0.04, 0.1, 1.8, 0.62),
-};
+const std::vector<CorridorGeometry> kTruths = testing::ExampleCorridors(0.62);
 
 struct Tolerance {
   double angle, metric;  // rad, m

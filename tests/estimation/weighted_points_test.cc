@@ -4,6 +4,7 @@
 // geometry, its points projected with Eigen's rotations (tests/support/exact_observation.h), not
 // with the solvers'. Also the observation's checks of the weights.
 
+#include <vector>
 #include <cmath>
 #include <random>
 #include <string>
@@ -17,13 +18,8 @@ namespace corridor {
 namespace {
 
 using testing::ExactObservation;
-using testing::MakeGeometry;
 
-const CorridorGeometry kTruths[] = {
-    MakeGeometry(0.0, 0.0, 0.0, 2.0, 0.66),
-    MakeGeometry(0.12, 0.06, 0.25, 2.4, 0.62),
-    MakeGeometry(-0.2, 0.1, -0.35, 3.1, 0.66),
-};
+const std::vector<CorridorGeometry> kTruths = testing::ExampleCorridors();
 
 // The truth's points with Gaussian noise of 0.1 px; two in five points of the left side moved
 // `shift` px to the left (a fainter parallel edge's pixels) and given weight `weak`; the other

@@ -30,6 +30,21 @@ inline CorridorGeometry MakeGeometry(double yaw, double pitch, double offset, do
   return g;
 }
 
+// The solver tests' corridors: level and centred; yawed, pitched down and off-centre; wide, yawed
+// the other way and pitched up; and, when narrow_camera_height > 0, a narrow one seen from that
+// camera height.
+inline std::vector<CorridorGeometry> ExampleCorridors(double narrow_camera_height = 0) {
+  std::vector<CorridorGeometry> corridors = {
+      MakeGeometry(0.0, 0.0, 0.0, 2.0, 0.66),
+      MakeGeometry(0.12, 0.06, 0.25, 2.4, 0.62),
+      MakeGeometry(-0.2, 0.1, -0.35, 3.1, 0.66),
+  };
+  if (narrow_camera_height > 0) {
+    corridors.push_back(MakeGeometry(0.05, -0.04, 0.1, 1.8, narrow_camera_height));
+  }
+  return corridors;
+}
+
 // Projects the junction points (-d_l, h, Z) and (d_r, h, Z) for Z in [z_near, z_far].
 inline CorridorObservation ExactObservation(const CorridorGeometry& g, int points_per_side = 20,
                                             double z_near = 2.0, double z_far = 12.0) {
