@@ -23,6 +23,10 @@ constexpr int kReappearsOver = 5;
 // The largest fraction of points whose band middle looks like the floor beyond the band: a
 // baseboard is the band at most points.
 constexpr double kMaxFloorLikeBand = 0.5;
+// A band is flat between its two edges: the colour's change across the band falls below this
+// fraction of the foot's. A blurred edge's tail or a reflection fading into the floor changes
+// all the way and has no flat part, so no foot.
+constexpr double kMaxValleyStep = 0.5;
 
 }  // namespace
 
@@ -88,6 +92,9 @@ bool FindLowerEdge(const cv::Mat& roi, int roi_top, const MergedLine& chosen,
     if (size > best_step) best_step = size, best = k;
   }
   if (best < 0 || !(best_step > 0)) return false;
+  double valley = best_step;
+  for (int k = first; k <= best - 2; ++k) valley = std::min(valley, step_at(k));
+  if (valley > kMaxValleyStep * best_step) return false;
   // A baseboard's colour is not seen again on the floor beyond its foot; a strip of floor between
   // the wall and a stripe is, beyond the stripe.
   cv::Vec3d band(0, 0, 0), beyond(0, 0, 0);

@@ -90,6 +90,27 @@ TEST(LowerEdgeTest, AStripeBesideTheWallIsNoBand) {
   EXPECT_FALSE(FindLowerEdge(image, 0, junction, kVp, true, 6.0, &foot, &turn));
 }
 
+TEST(LowerEdgeTest, AReflectionFadingIntoTheFloorIsNoBand) {
+  for (const bool left : {true, false}) {
+    // The junction at 30 degrees below a dark baseboard; on a polished floor the baseboard's
+    // reflection fades evenly from dark to the floor's grey over 4 degrees, and a faint ripple in
+    // the fade steps up most near 32.8 degrees. Nothing on the floor side is flat: it is one
+    // edge's tail, not a band with a foot.
+    const cv::Mat image = DrawByAngle(left, [](double angle, std::mt19937&) {
+      if (angle < 30) return cv::Vec3b(40, 40, 45);
+      const double fade = 40 * std::min(1.0, (angle - 30) / 4.0);
+      const double ripple = 2 * std::exp(-std::pow((angle - 33) / 0.3, 2));
+      const int v = static_cast<int>(std::lround(70 + fade + ripple));
+      return cv::Vec3b(v, v, v);
+    });
+    MergedLine foot;
+    double turn = 0;
+    EXPECT_FALSE(FindLowerEdge(image, 0, LineAlong(BandDown(30, left), 20, 340), kVp, left, 6.0,
+                               &foot, &turn))
+        << left << " turn " << turn;
+  }
+}
+
 TEST(LowerEdgeTest, APlainFloorHasNoEdge) {
   const cv::Mat image = DrawByAngle(false, [](double angle, std::mt19937&) {
     return angle < 30 ? cv::Vec3b(180, 180, 190) : cv::Vec3b(90, 110, 140);
