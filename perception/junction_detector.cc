@@ -20,6 +20,7 @@
 #include "perception/junction_support.h"
 #include "perception/line_ridge.h"
 #include "perception/line_segments.h"
+#include "perception/floor_lights.h"
 #include "perception/lower_edge.h"
 #include "perception/reflected_band.h"
 #include "perception/single_junction.h"
@@ -381,6 +382,46 @@ void RefineChosenPair(const PairSearch& chosen, const std::vector<Eigen::Vector2
   result->vanishing_point = WhereJunctionsMeet(*result, pair.vanishing_point);
 }
 
+// The largest difference, relative to the reflecting wall's, between the two walls' band heights
+// (BandAboveJunction) when both junctions are taken at their reflections' lower edges.
+constexpr double kMaxBandHeightDifference = 0.15;
+// The least fraction of the floor brighter than the walls for it to mirror the ceiling's lights.
+constexpr double kMinMirroredLights = 0.005;
+// One wall alone must show its reflection as a near-exact blend of its baseboard and the floor:
+// a diffuse floor's baseboard with a darker foot is a blend to within about 5% of its contrast.
+constexpr double kMaxOneWallGlossResidual = 0.03;
+
+// When one wall's junction reads as a reflection's lower edge and the other's does not: if that
+// reflection is a near-exact blend of its baseboard and the floor and the floor mirrors the
+// ceiling's lights (one wall alone is weak evidence: a baseboard with a darker foot, or a real
+// glossy floor's uneven reflection, can read so), the other wall's band, of the same height
+// relative to the camera's, ends at its reflection's lower edge too (one floor and one
+// baseboard), and its junction is taken at the band's middle.
+void TakeOtherWallsBandAsReflected(const cv::Mat& color, JunctionLine* const lines[2],
+                                   const Eigen::Vector2d& vp, bool reflected[2], double turn[2]) {
+  const int seen = reflected[0] ? 0 : 1, other = 1 - seen;
+  if (JunctionAtReflectedBandsMiddle(color, *lines[other], vp, other == 0,
+                                     2 * kBaseboardMaxTurnDeg)) {
+    return;  // Already between its baseboard and its reflection.
+  }
+  double seen_height = 0, other_height = 0, seen_turn = 0, other_turn = 0;
+  if (!FindReflectedJunction(color, *lines[seen], vp, seen == 0, 2 * kBaseboardMaxTurnDeg,
+                             &seen_turn, kMaxOneWallGlossResidual) ||
+      !BandAboveJunction(color, *lines[seen], vp, seen == 0, 2 * kBaseboardMaxTurnDeg,
+                         &seen_height, &seen_turn) ||
+      !BandAboveJunction(color, *lines[other], vp, other == 0, 2 * kBaseboardMaxTurnDeg,
+                         &other_height, &other_turn)) {
+    return;
+  }
+  if (!(seen_height > 0) ||
+      std::abs(other_height - seen_height) > kMaxBandHeightDifference * seen_height ||
+      !FloorMirrorsLights(color, lines[0]->line, lines[1]->line, vp, kMinMirroredLights)) {
+    return;
+  }
+  reflected[other] = true;
+  turn[other] = other_turn;
+}
+
 // Stage: on a polished floor, a junction taken at its baseboard's reflection's lower edge moves up
 // to the middle of the band (reflected_band.h), and the vanishing point with it.
 void TakeJunctionsAboveReflections(const cv::Mat& color, JunctionPair* result) {
@@ -395,6 +436,7 @@ void TakeJunctionsAboveReflections(const cv::Mat& color, JunctionPair* result) {
                                             2 * kBaseboardMaxTurnDeg, &turn[side]);
   }
   if (!reflected[0] && !reflected[1]) return;
+  if (reflected[0] != reflected[1]) TakeOtherWallsBandAsReflected(color, lines, vp, reflected, turn);
   for (int side = 0; side < 2; ++side) {
     if (!reflected[side] && !JunctionAtReflectedBandsMiddle(color, *lines[side], vp, side == 0,
                                                             2 * kBaseboardMaxTurnDeg)) {

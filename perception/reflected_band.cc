@@ -18,7 +18,7 @@ constexpr double kMaxSlopeDeg = 80.0;  // Steeper lines: their slopes are not me
 constexpr double kMinContrast = 30.0;  // Least wall/baseboard difference, summed over channels.
 // The floor's gloss, the reflection's step over the baseboard's, in this range, to within this
 // fraction of the baseboard's step; and the reflection unlike the baseboard by this fraction of it.
-constexpr double kMinGloss = 0.15, kMaxGloss = 0.85, kMaxGlossResidual = 0.25, kMinUnlike = 0.05;
+constexpr double kMinGloss = 0.15, kMaxGloss = 0.85, kMinUnlike = 0.05;
 constexpr double kMinUnlikeLevels = 9.0;  // And by at least this, summed over channels.
 // How far about the middle in slope (candidates) the step from baseboard to reflection is sought.
 constexpr double kMaxMiddleOffset = 3.0;
@@ -96,7 +96,7 @@ class TurnedProfile {
 // baseboard to reflection. `bottom_edge`: the band must also end at `bottom` (when no detected
 // line says that it does).
 bool ReadsAsReflection(const TurnedProfile& p, int top, double middle, int bottom,
-                       bool bottom_edge) {
+                       bool bottom_edge, double max_gloss_residual) {
   const int m = static_cast<int>(std::lround(middle));
   if (m - 2 < top + 2 || m + 2 > bottom - 2 || bottom + kFloorSteps > p.last()) return false;
   const cv::Vec3d wall = p.Mean(std::max(p.first(), top - 6), top - 2);
@@ -108,7 +108,7 @@ bool ReadsAsReflection(const TurnedProfile& p, int top, double middle, int botto
   const double gloss = (mirror - floor).dot(span) / span.dot(span);
   if (gloss < kMinGloss || gloss > kMaxGloss) return false;
   const double unlike = L1(mirror - board);
-  if (L1(mirror - floor - gloss * span) > kMaxGlossResidual * contrast ||
+  if (L1(mirror - floor - gloss * span) > max_gloss_residual * contrast ||
       unlike < std::max(kMinUnlikeLevels, kMinUnlike * contrast)) {
     return false;
   }
@@ -153,7 +153,7 @@ bool ReadBandTop(const cv::Mat& image, const JunctionLine& junction,
 
 bool FindReflectedJunction(const cv::Mat& image, const JunctionLine& junction,
                            const Eigen::Vector2d& vanishing_point, bool left, double max_turn_deg,
-                           double* turn_deg) {
+                           double* turn_deg, double max_gloss_residual) {
   thread_local TurnedProfile profile;
   int top = 0;
   if (!ReadBandTop(image, junction, vanishing_point, left, max_turn_deg, kFloorSteps, &profile,
@@ -165,8 +165,29 @@ bool FindReflectedJunction(const cv::Mat& image, const JunctionLine& junction,
   const double below = profile.below, below_top = below + top * step;
   const double middle_angle = std::atan(0.5 * (std::tan(below) + std::tan(below_top)));
   const double middle = (middle_angle - below) / step;  // Candidates, negative.
-  if (!ReadsAsReflection(profile, top, middle, 0, false)) return false;
+  if (!ReadsAsReflection(profile, top, middle, 0, false, max_gloss_residual)) return false;
   *turn_deg = middle * kStepDeg;
+  return true;
+}
+
+bool BandAboveJunction(const cv::Mat& image, const JunctionLine& junction,
+                       const Eigen::Vector2d& vanishing_point, bool left, double max_turn_deg,
+                       double* relative_height, double* middle_turn_deg) {
+  thread_local TurnedProfile profile;
+  int top = 0;
+  if (!ReadBandTop(image, junction, vanishing_point, left, max_turn_deg, kFloorSteps, &profile,
+                   &top)) {
+    return false;
+  }
+  // The band's top is a baseboard's: as unlike the wall above it as a reflection's band needs.
+  const cv::Vec3d wall = profile.Mean(std::max(profile.first(), top - 6), top - 2);
+  const cv::Vec3d board = profile.Mean(top + 2, std::min(top + 6, -2));
+  if (L1(board - wall) < kMinContrast) return false;
+  const double step = kStepDeg * M_PI / 180.0;
+  const double below = profile.below, below_top = below + top * step;
+  *relative_height = 1.0 - std::tan(below_top) / std::tan(below);
+  const double middle_angle = std::atan(0.5 * (std::tan(below) + std::tan(below_top)));
+  *middle_turn_deg = (middle_angle - below) / step * kStepDeg;
   return true;
 }
 
@@ -187,7 +208,7 @@ bool JunctionAtReflectedBandsMiddle(const cv::Mat& image, const JunctionLine& ju
   const double below = profile.below, below_top = below + top * step;
   const double bottom_angle = std::atan(2 * std::tan(below) - std::tan(below_top));
   const int bottom = static_cast<int>(std::lround((bottom_angle - below) / step));
-  return ReadsAsReflection(profile, top, 0.0, bottom, true);
+  return ReadsAsReflection(profile, top, 0.0, bottom, true, kMaxGlossResidual);
 }
 
 }  // namespace corridor

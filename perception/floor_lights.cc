@@ -1,0 +1,55 @@
+#include "perception/floor_lights.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace corridor {
+
+bool FloorMirrorsLights(const cv::Mat& image, const Eigen::Vector3d& left,
+                        const Eigen::Vector3d& right, const Eigen::Vector2d& vanishing_point,
+                        double min_fraction) {
+  if (image.empty() || image.type() != CV_8UC3 || !vanishing_point.allFinite() ||
+      !left.allFinite() || !right.allFinite()) {
+    return false;
+  }
+  // The floor's side of each line: that of the image's bottom middle.
+  const Eigen::Vector3d bottom(0.5 * (image.cols - 1), image.rows - 1, 1);
+  const double left_sign = left.dot(bottom) >= 0 ? 1 : -1;
+  const double right_sign = right.dot(bottom) >= 0 ? 1 : -1;
+  const int top = std::clamp(static_cast<int>(std::ceil(vanishing_point.y())) + 1, 0, image.rows);
+  // Brightness histograms (sum of the three channels) of the floor and of the rest.
+  std::array<long, 766> floor{}, walls{};
+  long floor_count = 0, wall_count = 0;
+  for (int v = top; v < image.rows; ++v) {
+    const cv::Vec3b* row = image.ptr<cv::Vec3b>(v);
+    for (int u = 0; u < image.cols; ++u) {
+      const Eigen::Vector3d p(u, v, 1);
+      const bool on_floor = left_sign * left.dot(p) > 0 && right_sign * right.dot(p) > 0;
+      const int level = row[u][0] + row[u][1] + row[u][2];
+      if (on_floor) {
+        ++floor[level];
+        ++floor_count;
+      } else {
+        ++walls[level];
+        ++wall_count;
+      }
+    }
+  }
+  if (floor_count == 0 || wall_count == 0) return false;
+  // The walls' 99th percentile, and the floor's pixels above it.
+  long seen = 0;
+  int percentile = 765;
+  for (int level = 0; level <= 765; ++level) {
+    seen += walls[level];
+    if (seen >= 0.99 * static_cast<double>(wall_count)) {
+      percentile = level;
+      break;
+    }
+  }
+  long brighter = 0;
+  for (int level = percentile + 1; level <= 765; ++level) brighter += floor[level];
+  return brighter >= min_fraction * static_cast<double>(floor_count);
+}
+
+}  // namespace corridor
