@@ -37,12 +37,12 @@ bool FloorMirrorsLights(const cv::Mat& image, const Eigen::Vector3d& left,
     }
   }
   if (floor_count == 0 || wall_count == 0) return false;
-  // The walls' 99th percentile, and the floor's pixels above it.
+  // The walls' 90th percentile (a door or a lit patch may be brighter), and the floor above it.
   long seen = 0;
   int percentile = 765;
   for (int level = 0; level <= 765; ++level) {
     seen += walls[level];
-    if (seen >= 0.99 * static_cast<double>(wall_count)) {
+    if (seen >= 0.9 * static_cast<double>(wall_count)) {
       percentile = level;
       break;
     }
