@@ -68,16 +68,44 @@ __attribute__((target("avx2"))) inline void SumSobelAvx2(const cv::Mat& bgr, con
 // The band from the point along `direction` (from 2 px on, its length): the fraction of it on an
 // edge running along `up` (within 1 px across, its gradient across `up` at least `threshold` and
 // twice its gradient along `up`), and its mean contrast across `up` (the largest within 1 px).
+// The walk stops once the fraction cannot reach `min_fraction`: the fraction is then the most it
+// could have been (below min_fraction, as the whole walk's would be) and the contrast is not
+// meaningful; callers read it only for a band at min_fraction or above.
 struct Run {
   double fraction = 0;
   double contrast = 0;
 };
+
+// The band's points (k = 2, 3, ... up to `length`).
+inline int BandPoints(double length) {
+  return length >= 2 ? static_cast<int>(std::floor(length)) - 1 : 0;
+}
+
+// The fewest points off an edge that leave a band of `total` points below min_fraction, its best
+// fraction computed as the whole walk's would be; total + 1 when none do.
+inline int MissesToFail(int total, double min_fraction) {
+  for (int misses = 0; misses <= total; ++misses) {
+    if (static_cast<double>(total - misses) / total < min_fraction) return misses;
+  }
+  return total + 1;
+}
+
+// The Run of a walk cut after `misses` points off an edge: the best fraction it could have had.
+inline Run CutRun(int total, int misses) {
+  Run run;
+  run.fraction = static_cast<double>(total - misses) / total;
+  return run;
+}
+
 Run BandRunBaseline(const cv::Mat& bgr, const BandPoint& p, const Eigen::Vector2d& direction,
-                    double threshold) {
+                    double threshold, double min_fraction) {
   const Eigen::Vector2d across(-p.up.y(), p.up.x());
+  const int total = BandPoints(p.length);
+  const int fail = MissesToFail(total, min_fraction);
   int on = 0, n = 0;
   double contrast = 0;
   for (double k = 2; k <= p.length; k += 1, ++n) {
+    if (n - on >= fail) return CutRun(total, n - on);
     const Eigen::Vector2d q = p.pixel + k * direction;
     double best = 0;
     bool edge = false;
@@ -167,7 +195,7 @@ __attribute__((target("avx2"))) inline __m128i RoundHalfAwayAvx2(__m256d x) {
 // which changes neither the largest contrast (>= 0) nor the edge test (threshold > 0).
 __attribute__((target("avx2"))) Run BandRunAvx2(const cv::Mat& bgr, const BandPoint& p,
                                                 const Eigen::Vector2d& direction,
-                                                double threshold) {
+                                                double threshold, double min_fraction) {
   const Eigen::Vector2d across(-p.up.y(), p.up.x());
   const __m256d steps = _mm256_setr_pd(-1.0, 0.0, 1.0, 0.0);
   const __m256d step_x = _mm256_mul_pd(steps, _mm256_set1_pd(across.x()));
@@ -180,9 +208,12 @@ __attribute__((target("avx2"))) Run BandRunAvx2(const cv::Mat& bgr, const BandPo
   const uchar* data = bgr.data;
   const uchar* end = bgr.dataend;
   const size_t step = bgr.step[0];
+  const int total = BandPoints(p.length);
+  const int fail = MissesToFail(total, min_fraction);
   int on = 0, n = 0;
   double contrast = 0;
   for (double k = 2; k <= p.length; k += 1, ++n) {
+    if (n - on >= fail) return CutRun(total, n - on);
     const Eigen::Vector2d q = p.pixel + k * direction;
     alignas(16) int us[4], vs[4];
     _mm_store_si128(reinterpret_cast<__m128i*>(us),
@@ -230,11 +261,11 @@ __attribute__((target("avx2"))) Run BandRunAvx2(const cv::Mat& bgr, const BandPo
 #endif
 
 Run BandRun(const cv::Mat& bgr, const BandPoint& p, const Eigen::Vector2d& direction,
-            double threshold) {
+            double threshold, double min_fraction) {
 #ifdef CORRIDOR_AVX2_VARIANTS
-  if (CpuHasAvx2()) return BandRunAvx2(bgr, p, direction, threshold);
+  if (CpuHasAvx2()) return BandRunAvx2(bgr, p, direction, threshold, min_fraction);
 #endif
-  return BandRunBaseline(bgr, p, direction, threshold);
+  return BandRunBaseline(bgr, p, direction, threshold, min_fraction);
 }
 
 }  // namespace
@@ -301,14 +332,14 @@ VerticalCrossings CountVerticalCrossings(const cv::Mat& bgr, const Camera& camer
     BandPoint p{pixel, up.normalized(), std::min(up.norm(), options.max_band_px)};
     if (!(up.norm() >= options.min_band_px) || !p.up.allFinite()) continue;
     ++out.samples;
-    const Run above_run = BandRun(bgr, p, p.up, threshold);
+    const Run above_run = BandRun(bgr, p, p.up, threshold, options.min_run);
     if (above_run.fraction < options.min_run) {
       end_run();
       continue;
     }
     in_run = true;
     if (!run_crosses) {
-      const Run below = BandRun(bgr, p, -p.up, threshold);
+      const Run below = BandRun(bgr, p, -p.up, threshold, options.min_run);
       run_crosses = below.fraction >= options.min_run &&
                     below.contrast >= options.min_contrast_ratio * above_run.contrast;
     }
