@@ -411,6 +411,31 @@ struct LineWalker {
   int V(int y) const { return along_u ? y >> kShift : y; }
 };
 
+// A row of pixel states from the edge map's row: kWaiting at its edge (non-zero) pixels, kNone
+// elsewhere, sixteen at a time where SSE2 is there; returns the row's edge pixels.
+CORRIDOR_ALWAYS_INLINE inline size_t WaitingRow(const uchar* edges, int width, uchar* state) {
+  static_assert(kNone == 0 && kWaiting == 1, "the states are the edge test's 0 and 1");
+  int u = 0;
+  size_t count = 0;
+#ifdef __SSE2__
+  const __m128i zero = _mm_setzero_si128(), one = _mm_set1_epi8(1);
+  __m128i sums = zero;  // Two 64-bit sums of the states.
+  for (; u + 16 <= width; u += 16) {
+    const __m128i e = _mm_loadu_si128(reinterpret_cast<const __m128i*>(edges + u));
+    const __m128i waiting = _mm_andnot_si128(_mm_cmpeq_epi8(e, zero), one);
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(state + u), waiting);
+    sums = _mm_add_epi64(sums, _mm_sad_epu8(waiting, zero));
+  }
+  count = static_cast<size_t>(_mm_cvtsi128_si64(sums)) +
+          static_cast<size_t>(_mm_cvtsi128_si64(_mm_unpackhi_epi64(sums, sums)));
+#endif
+  for (; u < width; ++u) {
+    state[u] = edges[u] != 0 ? kWaiting : kNone;
+    count += state[u];
+  }
+  return count;
+}
+
 // OrientedHoughSegments' body, compiled for the baseline and (kAvx2) for AVX2: the same votes.
 template <bool kAvx2>
 CORRIDOR_ALWAYS_INLINE inline void HoughBody(const cv::Mat& edges, const cv::Mat& dx,
@@ -439,15 +464,17 @@ CORRIDOR_ALWAYS_INLINE inline void HoughBody(const cv::Mat& edges, const cv::Mat
   cv::Mat& state = scratch.state;
   cv::Mat& bins = scratch.bins;
   state.create(height, width, CV_8U);
-  // Row by row: cv::Mat::setTo allocates its scalar's buffer.
-  for (int v = 0; v < height; ++v) std::memset(state.ptr<uchar>(v), kNone, width);
+  size_t edge_pixels = 0;
+  for (int v = 0; v < height; ++v) {
+    edge_pixels += WaitingRow(edges.ptr<uchar>(v), width, state.ptr<uchar>(v));
+  }
   bins.create(height, width, CV_8U);
+  // Sized once (only growing past an earlier call's count writes anything), then filled through
+  // a pointer.
   std::vector<cv::Point>& pool = scratch.pool;
-  pool.clear();
-  ForEachEdgePixel(edges, [&](int u, int v) {
-    state.at<uchar>(v, u) = kWaiting;
-    pool.emplace_back(u, v);
-  });
+  pool.resize(edge_pixels);
+  cv::Point* next = pool.data();
+  ForEachEdgePixel(edges, [&](int u, int v) { *next++ = cv::Point(u, v); });
   GradientBins<kAvx2>(pool, dx, dy, &bins);
   DrawOrder(pool, &scratch.keys, &scratch.sorted, &scratch.drawn);
   const int max_gap =
