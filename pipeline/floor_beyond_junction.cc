@@ -41,17 +41,23 @@ struct Sample {
 // false when one falls outside the image.
 bool SideColour(const cv::Mat& bgr, const Eigen::Vector2d& p, const Eigen::Vector2d& n,
                 cv::Vec3d* colour) {
-  cv::Vec3d sum(0, 0, 0);
+  // Integer sums: the same as doubles added in order (whole numbers far below 2^53).
+  int sum[3] = {0, 0, 0};
   int count = 0;
   for (double d = kNear; d <= kFar + 1e-9; d += 1.0) {
     const int u = RoundHalfAway(p.x() + d * n.x());
     const int v = RoundHalfAway(p.y() + d * n.y());
-    if (u < 0 || v < 0 || u >= bgr.cols || v >= bgr.rows) return false;
-    const cv::Vec3b& c = bgr.at<cv::Vec3b>(v, u);
-    sum += cv::Vec3d(c[0], c[1], c[2]);
+    if (static_cast<unsigned>(u) >= static_cast<unsigned>(bgr.cols) ||
+        static_cast<unsigned>(v) >= static_cast<unsigned>(bgr.rows)) {
+      return false;
+    }
+    const uchar* c = bgr.ptr<uchar>(v) + 3 * u;
+    sum[0] += c[0];
+    sum[1] += c[1];
+    sum[2] += c[2];
     ++count;
   }
-  *colour = sum * (1.0 / count);
+  *colour = cv::Vec3d(sum[0], sum[1], sum[2]) * (1.0 / count);
   return true;
 }
 
