@@ -59,11 +59,12 @@ std::vector<Eigen::Vector2d> EdgePixelsInImage(const JunctionSearchRegion& regio
 
 void EdgePixelsInImage(const JunctionSearchRegion& region, const cv::Mat& edges,
                        std::vector<Eigen::Vector2d>* points) {
-  points->clear();
-  points->reserve(static_cast<size_t>(cv::countNonZero(edges)));
+  // Sized once (Eigen's vectors are not initialised), then written through a pointer.
+  points->resize(static_cast<size_t>(cv::countNonZero(edges)));
+  Eigen::Vector2d* next = points->data();
   const int scale = region.scale, row0 = region.work_roi_top, crop_top = region.crop_top;
   ForEachEdgePixel(edges, [&](int u, int v) {
-    points->emplace_back(scale * u, scale * (v + row0) + crop_top);
+    *next++ = Eigen::Vector2d(scale * u, scale * (v + row0) + crop_top);
   });
 }
 
