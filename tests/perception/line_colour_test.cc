@@ -51,6 +51,26 @@ TEST(LineColourTest, EqualsTheScalarSumBitForBit) {
   }
 }
 
+TEST(LineColourTest, AViewOfSomeColumnsIsReadThroughItsRowStep) {
+  std::mt19937 rng(5);
+  cv::Mat image(90, 130, CV_8UC3);
+  cv::randu(image, cv::Scalar::all(0), cv::Scalar::all(256));
+  // Rows 30-89, columns 10-109: rows a step longer than their pixels, the last one ending before
+  // the image's data does.
+  const cv::Mat roi = image(cv::Rect(10, 30, 100, 60));
+  std::uniform_real_distribution<double> coordinate(-20, 140), angle(-M_PI, M_PI);
+  std::uniform_real_distribution<double> radius(0, 120);
+  for (int trial = 0; trial < 500; ++trial) {
+    const double x0 = coordinate(rng), y0 = 30 + coordinate(rng), a = angle(rng);
+    std::vector<double> radii(24);
+    for (double& r : radii) r = radius(rng);
+    const cv::Vec3d got = MeanColourAtRadii(roi, 30, x0, y0, std::cos(a), std::sin(a),
+                                            radii.data(), static_cast<int>(radii.size()));
+    const cv::Vec3d want = Reference(roi, 30, x0, y0, std::cos(a), std::sin(a), radii);
+    for (int c = 0; c < 3; ++c) ASSERT_EQ(got[c], want[c]) << trial << " " << c;
+  }
+}
+
 TEST(LineColourTest, PointsFarOutsideOrNotNumbersAreClampedAsTheScalarCodeDoes) {
   cv::Mat image(40, 50, CV_8UC3);
   cv::randu(image, cv::Scalar::all(0), cv::Scalar::all(256));
