@@ -6,6 +6,27 @@
 
 namespace corridor {
 
+namespace {
+
+// The columns of row v on the floor's side (`sign`) of `line`, narrowing [*lo, *hi) to them: the
+// side is a half-row, its end where the line crosses the row.
+void KeepFloorSide(const Eigen::Vector3d& line, double sign, int v, int cols, int* lo, int* hi) {
+  const double a = sign * line.x(), rest = sign * (line.y() * v + line.z());
+  if (std::abs(a) < 1e-12) {
+    if (!(rest > 0)) *hi = *lo;  // The whole row is on the wall's side.
+    return;
+  }
+  // a u + rest > 0: u beyond the crossing, on the side a points to.
+  const double crossing = -rest / a;
+  if (a > 0) {
+    *lo = std::max(*lo, static_cast<int>(std::clamp(std::floor(crossing) + 1, 0.0, 1.0 * cols)));
+  } else {
+    *hi = std::min(*hi, static_cast<int>(std::clamp(std::ceil(crossing), 0.0, 1.0 * cols)));
+  }
+}
+
+}  // namespace
+
 bool FloorMirrorsLights(const cv::Mat& image, const Eigen::Vector3d& left,
                         const Eigen::Vector3d& right, const Eigen::Vector2d& vanishing_point,
                         double min_fraction) {
@@ -23,9 +44,11 @@ bool FloorMirrorsLights(const cv::Mat& image, const Eigen::Vector3d& left,
   long floor_count = 0, wall_count = 0;
   for (int v = top; v < image.rows; ++v) {
     const cv::Vec3b* row = image.ptr<cv::Vec3b>(v);
+    int lo = 0, hi = image.cols;
+    KeepFloorSide(left, left_sign, v, image.cols, &lo, &hi);
+    KeepFloorSide(right, right_sign, v, image.cols, &lo, &hi);
     for (int u = 0; u < image.cols; ++u) {
-      const Eigen::Vector3d p(u, v, 1);
-      const bool on_floor = left_sign * left.dot(p) > 0 && right_sign * right.dot(p) > 0;
+      const bool on_floor = u >= lo && u < hi;
       const int level = row[u][0] + row[u][1] + row[u][2];
       if (on_floor) {
         ++floor[level];
