@@ -162,10 +162,23 @@ bool FindReflectedJunction(const cv::Mat& image, const JunctionLine& junction,
   }
   // The middle in slope of the band from its top to the junction, its lower edge.
   const double step = kStepDeg * M_PI / 180.0;
-  const double below = profile.below, below_top = below + top * step;
-  const double middle_angle = std::atan(0.5 * (std::tan(below) + std::tan(below_top)));
-  const double middle = (middle_angle - below) / step;  // Candidates, negative.
-  if (!ReadsAsReflection(profile, top, middle, 0, false, max_gloss_residual)) return false;
+  const double below = profile.below;
+  const auto middle_below = [&](int band_top) {
+    const double below_top = below + band_top * step;
+    const double middle_angle = std::atan(0.5 * (std::tan(below) + std::tan(below_top)));
+    return (middle_angle - below) / step;  // Candidates, negative.
+  };
+  double middle = middle_below(top);
+  if (!ReadsAsReflection(profile, top, middle, 0, false, max_gloss_residual)) {
+    // A reflection much darker than its baseboard makes the junction itself the largest change:
+    // the band's top is then the largest change beyond it, toward the wall.
+    double change = 0;
+    const int wall_steps = static_cast<int>(max_turn_deg / kStepDeg);
+    top = profile.LargestChange(-wall_steps + 2, top - kMinBandSteps, &change);
+    if (top == 0 || !(below + top * step > 0)) return false;
+    middle = middle_below(top);
+    if (!ReadsAsReflection(profile, top, middle, 0, false, max_gloss_residual)) return false;
+  }
   *turn_deg = middle * kStepDeg;
   return true;
 }
