@@ -180,17 +180,60 @@ Status DepthRecoverer::Detect(const cv::Mat& image, const Camera& camera,
 
 Status DepthRecoverer::Reconstruct(const Camera& camera, RecoverDepthResult* result,
                                    const CorridorGeometry* previous) const {
-  const std::string detect_notes = result->fallback;
-  Status status = ReconstructAsSeen(camera, result, previous);
-  if (status.code() == StatusCode::kLowConfidence) {
-    status = TryOuterJunctions(camera, detect_notes, result, previous);
-  }
+  const Status status = ReconstructLayout(camera, result, previous);
   // A frame refused for its confidence is tried level too: a roll the model lacks may be what
-  // weakens its evidence.
-  if ((status.ok() || status.code() == StatusCode::kLowConfidence) && level_ != nullptr) {
-    LevelRoll(*level_, camera, previous, result);
+  // weakens its evidence. A level frame taken is finished there.
+  if ((status.ok() || status.code() == StatusCode::kLowConfidence) && level_ != nullptr &&
+      LevelRoll(*level_, camera, previous, result)) {
+    return result->status;
   }
-  return result->status;
+  return FinishLayout(camera, result);
+}
+
+Status DepthRecoverer::ReconstructLayout(const Camera& camera, RecoverDepthResult* result,
+                                         const CorridorGeometry* previous) const {
+  const std::string detect_notes = result->fallback;
+  const Status status = ReconstructAsSeen(camera, result, previous);
+  if (status.code() == StatusCode::kLowConfidence) {
+    return TryOuterJunctions(camera, detect_notes, result, previous);
+  }
+  return status;
+}
+
+Status DepthRecoverer::FinishLayout(const Camera& camera, RecoverDepthResult* result) const {
+  if (!result->status.ok() || !result->has_geometry) return result->status;
+  const auto start = Clock::now();
+  const auto finish = [&](Status status) {
+    result->status = status;
+    result->times.total += SecondsSince(start);
+    return status;
+  };
+  // The options' own solver on the layout's junctions, when the frame's walls are theirs: not
+  // one hidden, nor a wall the inner-line check moved (the ceiling's, not a junction line's), nor
+  // a width held or walls scaled from the previous frames.
+  if (ChosenSolveDiffers(options_) && result->junctions.status.ok() && result->moved_side < 0 &&
+      !result->width_held && !result->walls_scaled) {
+    const Status status = ChosenSolve(*solver_, options_, result->junctions, camera,
+                                      &result->geometry, &result->solver_summary);
+    result->times.solve += SecondsSince(start);
+    if (!status.ok()) {
+      result->has_geometry = false;
+      return finish(status);
+    }
+  }
+  const auto stage = Clock::now();
+  // Into the previous frame's depth memory (Detect's), when the handover is this result's alone;
+  // a refusal before the rasteriser wrote into it leaves no depth, as without it.
+  if (result->handover != nullptr && result->handover.use_count() == 1) {
+    FrameHandover& own = *std::const_pointer_cast<FrameHandover>(result->handover);
+    result->depth = std::move(own.depth_memory);
+  }
+  const uchar* const given = result->depth.datastart;
+  Status status = rasterizer_->Render(result->geometry, camera, &result->depth);
+  if (!status.ok() && given != nullptr && result->depth.datastart == given) result->depth.release();
+  if (status.ok()) MarkNoEstimateNaN(&result->depth);
+  result->times.rasterize = SecondsSince(stage);
+  return finish(status);
 }
 
 Status DepthRecoverer::TryOuterJunctions(const Camera& camera, const std::string& detect_notes,
@@ -329,15 +372,6 @@ Status DepthRecoverer::ReconstructAsSeen(const Camera& camera, RecoverDepthResul
       if (!status.ok()) return finish(status);
     }
   }
-  // The options' own solver on the junctions the checks leave (unless the inner-line check moved
-  // a wall: that wall is the ceiling's, not a junction line's).
-  if (ChosenSolveDiffers(options_) && result->junctions.status.ok() && result->moved_side < 0) {
-    const auto solve_start = Clock::now();
-    status = ChosenSolve(*solver_, options_, result->junctions, camera, &geometry,
-                         &result->solver_summary);
-    result->times.solve += SecondsSince(solve_start);
-    if (!status.ok()) return finish(status);
-  }
   // The width hold comes after the checks, which may have moved a wall out with this frame's own
   // evidence. A width still much narrower whose two ceiling junctions, each searched alone, agree
   // (within 6%: what the baseboard check needs no check for) is this frame's walls confirmed: the
@@ -437,20 +471,7 @@ Status DepthRecoverer::ReconstructAsSeen(const Camera& camera, RecoverDepthResul
     return finish(Status::LowConfidence(msg.str()));
   }
   result->has_geometry = true;
-
-  stage = Clock::now();
-  // Into the previous frame's depth memory (Detect's), when the handover is this result's alone;
-  // a refusal before the rasteriser wrote into it leaves no depth, as without it.
-  if (result->handover != nullptr && result->handover.use_count() == 1) {
-    FrameHandover& own = *std::const_pointer_cast<FrameHandover>(result->handover);
-    result->depth = std::move(own.depth_memory);
-  }
-  const uchar* const given = result->depth.datastart;
-  status = rasterizer_->Render(geometry, camera, &result->depth);
-  if (!status.ok() && given != nullptr && result->depth.datastart == given) result->depth.release();
-  if (status.ok()) MarkNoEstimateNaN(&result->depth);
-  result->times.rasterize = SecondsSince(stage);
-  return finish(status);
+  return finish(Status::Ok());
 }
 
 Status RecoverDepth(const cv::Mat& image, const Camera& camera, const RecoverDepthOptions& options,

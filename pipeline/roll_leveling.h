@@ -13,7 +13,10 @@ namespace corridor {
 // pixels, NaN where the turned frame had none), with result->roll set and a note. The junction
 // lines stay the frame's own (its pixels). When the level frame is not ok, the frame keeps its
 // own answer, with a note; so it does when the level frame's confidence is lower than its own.
-void LevelRoll(const DepthRecoverer& level, const Camera& camera,
+// The choice is made on the layouts (DepthRecoverer::ReconstructLayout), before any depth; a level
+// frame taken is finished by `level` (its solver, its depth) and true returned; false when the
+// frame keeps its own layout, still to be finished.
+bool LevelRoll(const DepthRecoverer& level, const Camera& camera,
                const CorridorGeometry* previous, RecoverDepthResult* result);
 
 }  // namespace corridor

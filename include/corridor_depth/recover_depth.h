@@ -150,7 +150,15 @@ class DepthRecoverer {
                  std::unique_ptr<CorridorSolver> layout_solver,
                  std::unique_ptr<DepthRasterizer> rasterizer);
 
-  // Reconstruct without the roll's levelling.
+  // The frame's layout (its junctions, checks, holds, end wall and confidence) with the layout's
+  // solver, without depth: as seen, then with a wall's own junction further out when refused for
+  // the floor going on across a junction. Every decision between layouts is made on this.
+  Status ReconstructLayout(const Camera& camera, RecoverDepthResult* result,
+                           const CorridorGeometry* previous) const;
+  // A recovered layout finished: the options' own solver estimates yaw, pitch, width and offset
+  // from its junctions (chosen_solve.h), then the depth is rasterised.
+  Status FinishLayout(const Camera& camera, RecoverDepthResult* result) const;
+  // The layout as seen, without the roll's levelling.
   Status ReconstructAsSeen(const Camera& camera, RecoverDepthResult* result,
                            const CorridorGeometry* previous) const;
   // After a refusal because the floor goes on across a junction: the frame again with the wall's
@@ -158,6 +166,10 @@ class DepthRecoverer {
   // recovered. `detect_notes` are Detect's notes on the frame.
   Status TryOuterJunctions(const Camera& camera, const std::string& detect_notes,
                            RecoverDepthResult* result, const CorridorGeometry* previous) const;
+
+  // LevelRoll decides on the level frame's layout, then finishes it.
+  friend bool LevelRoll(const DepthRecoverer& level, const Camera& camera,
+                        const CorridorGeometry* previous, RecoverDepthResult* result);
 
   const RecoverDepthOptions options_;
   const std::unique_ptr<CorridorSolver> solver_;
