@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "estimation/bounded_lm.h"
+#include "estimation/capped_weights.h"
 #include "estimation/closed_form.h"
 #include "estimation/junction_line_residual.h"
 #include "estimation/junction_trim.h"
@@ -78,13 +79,17 @@ RobustLoss LossAt(const SolverOptions& options, const CorridorObservation& obser
 
 }  // namespace
 
-Status JointSolver::Solve(const CorridorObservation& observation, const CorridorGeometry* initial,
+Status JointSolver::Solve(const CorridorObservation& given, const CorridorGeometry* initial,
                           SolverSummary* summary) const {
   const auto start = std::chrono::steady_clock::now();
   *summary = SolverSummary();
   summary->solver_name = Name();
   std::string why;
-  if (!observation.Check(&why)) return Status::InvalidArgument(why);
+  if (!given.Check(&why)) return Status::InvalidArgument(why);
+  // The points with their weights capped; the thread's, reused from call to call.
+  thread_local CorridorObservation capped;
+  const CorridorObservation& observation =
+      CapWeights(given, options_.max_weight_ratio, &capped) ? capped : given;
   CorridorGeometry start_geometry;
   if (initial != nullptr) {
     start_geometry = *initial;

@@ -6,6 +6,7 @@
 #include <ceres/ceres.h>
 
 #include "estimation/alternation.h"
+#include "estimation/capped_weights.h"
 #include "estimation/closed_form.h"
 #include "estimation/junction_trim.h"
 #include "estimation/ceres_options.h"
@@ -60,11 +61,15 @@ class LmStageMinimizer : public StageMinimizer {
 
 }  // namespace
 
-Status LmSolver::Solve(const CorridorObservation& observation, const CorridorGeometry* initial,
+Status LmSolver::Solve(const CorridorObservation& given, const CorridorGeometry* initial,
                        SolverSummary* summary) const {
   const auto start = std::chrono::steady_clock::now();
   *summary = SolverSummary();
   summary->solver_name = Name();
+  // The points with their weights capped; the thread's, reused from call to call.
+  thread_local CorridorObservation capped;
+  const CorridorObservation& observation =
+      CapWeights(given, options_.max_weight_ratio, &capped) ? capped : given;
   // Without an initial estimate, the closed form's (when it has one): the alternation from zero
   // yaw and offset and a guessed width can stop in another minimum. The closed form is not
   // robust: where gross outliers put its estimate where the stages find no floor, the

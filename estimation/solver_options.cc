@@ -121,6 +121,9 @@ bool SolverOptions::Check(std::string* why) const {
   if (!(loss_sigmas >= 0 && std::isfinite(loss_sigmas))) {
     return Fail(why, "loss_sigmas must be >= 0 (0 = the fixed loss_scale)");
   }
+  if (!(max_weight_ratio >= 0 && std::isfinite(max_weight_ratio))) {
+    return Fail(why, "max_weight_ratio must be >= 0 (0 = the weights as given)");
+  }
   if (max_rounds <= 0 || max_rounds > 100) return Fail(why, "max_rounds must be in [1, 100]");
   if (!(round_tolerance > 0)) return Fail(why, "round_tolerance must be positive");
   if (!std::isfinite(initial_pitch) || std::abs(initial_pitch) >= M_PI / 2) {

@@ -74,6 +74,11 @@ struct SolverOptions {
   // second edge a pixel away; points sampled on fitted lines have no spread, and any scale keeps
   // their exact fit.
   double loss_sigmas = 1.345;
+  // "joint" and "lm": a point's weight counts at most max_weight_ratio times its side's median
+  // weight (each side then scaled to a mean weight of 1); 0 = as given. The inverse-variance
+  // weights of edge points hold up to about twice the median: the stronger points lie mostly on
+  // a second edge beside the junction (docs/results.md).
+  double max_weight_ratio = 2.0;
   int max_rounds = 20;            // Alternation rounds of stage 1 then stage 2 (grid, lm).
   double round_tolerance = 1e-6;  // Stop alternating when no parameter moves more than this.
   double initial_pitch = 0.0;     // Pitch prior theta_0 when no initial estimate is given, rad.
