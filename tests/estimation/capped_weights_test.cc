@@ -14,6 +14,7 @@
 #include "corridor_depth/solver.h"
 #include "estimation/capped_weights.h"
 #include "tests/support/exact_observation.h"
+#include "tests/support/weights_only_width.h"
 
 namespace corridor {
 namespace {
@@ -60,27 +61,13 @@ CorridorObservation StrongSecondEdge(const CorridorGeometry& truth) {
   return obs;
 }
 
-double WidthError(const std::string& solver_name, double max_weight_ratio,
-                  const CorridorObservation& obs, const CorridorGeometry& truth) {
-  SolverOptions options;
-  options.loss = "none";  // The weights alone: no loss or trimming to drop the second edge.
-  options.trim_sigmas = 0;
-  options.max_weight_ratio = max_weight_ratio;
-  std::unique_ptr<CorridorSolver> solver;
-  EXPECT_TRUE(CreateSolver(solver_name, options, &solver).ok());
-  SolverSummary summary;
-  const Status status = solver->Solve(obs, nullptr, &summary);
-  EXPECT_TRUE(status.ok()) << solver_name << ": " << status.ToString();
-  return std::abs(summary.estimate.width - truth.width) / truth.width;
-}
-
 TEST(CappedWeightsTest, JointAndLmLandNearerTheTruthWithTheStrongPointsCapped) {
   for (const CorridorGeometry& truth : testing::ExampleCorridors()) {
     const CorridorObservation obs = StrongSecondEdge(truth);
     for (const std::string solver : {"joint", "lm"}) {
       SCOPED_TRACE(solver + ", width " + std::to_string(truth.width));
-      const double as_given = WidthError(solver, 0.0, obs, truth);
-      const double capped = WidthError(solver, 2.0, obs, truth);
+      const double as_given = testing::WeightsOnlyWidthError(solver, obs, truth, 0.0);
+      const double capped = testing::WeightsOnlyWidthError(solver, obs, truth, 2.0);
       EXPECT_GT(as_given, 1e-3);  // The second edge's pull is measurable.
       EXPECT_LT(capped, 0.75 * as_given);
     }

@@ -13,6 +13,7 @@
 
 #include "corridor_depth/solver.h"
 #include "tests/support/exact_observation.h"
+#include "tests/support/weights_only_width.h"
 
 namespace corridor {
 namespace {
@@ -44,19 +45,6 @@ CorridorObservation WeakShiftedObservation(const CorridorGeometry& truth, double
   return obs;
 }
 
-double WidthError(const std::string& solver_name, const CorridorObservation& obs,
-                  const CorridorGeometry& truth) {
-  SolverOptions options;
-  options.loss = "none";  // The weights alone, no robust loss to hide the shifted points.
-  options.trim_sigmas = 0;
-  std::unique_ptr<CorridorSolver> solver;
-  EXPECT_TRUE(CreateSolver(solver_name, options, &solver).ok());
-  SolverSummary summary;
-  const Status status = solver->Solve(obs, nullptr, &summary);
-  EXPECT_TRUE(status.ok()) << solver_name << ": " << status.ToString();
-  return std::abs(summary.estimate.width - truth.width) / truth.width;
-}
-
 TEST(WeightedPointsTest, EverySolverRecoversTheWidthFromWeightedPoints) {
   unsigned seed = 7;
   for (const auto& truth : kTruths) {
@@ -65,8 +53,8 @@ TEST(WeightedPointsTest, EverySolverRecoversTheWidthFromWeightedPoints) {
     unweighted.left_weights.clear();
     unweighted.right_weights.clear();
     for (const std::string name : {"closed_form", "lm", "joint", "grid"}) {
-      const double with = WidthError(name, weighted, truth);
-      const double without = WidthError(name, unweighted, truth);
+      const double with = testing::WeightsOnlyWidthError(name, weighted, truth);
+      const double without = testing::WeightsOnlyWidthError(name, unweighted, truth);
       // Weighted within 0.2% (0.15% or less in every case here); unweighted 0.21-1.6% off.
       EXPECT_LT(with, 0.002) << name << " width " << truth.width;
       EXPECT_GT(without, 0.002) << name << " width " << truth.width;
@@ -83,7 +71,9 @@ TEST(WeightedPointsTest, UnitWeightsAreNoWeights) {
     none.left_weights.clear();
     none.right_weights.clear();
     for (const std::string name : {"closed_form", "lm", "joint", "grid"}) {
-      EXPECT_NEAR(WidthError(name, obs, truth), WidthError(name, none, truth), 1e-9) << name;
+      EXPECT_NEAR(testing::WeightsOnlyWidthError(name, obs, truth),
+                  testing::WeightsOnlyWidthError(name, none, truth), 1e-9)
+          << name;
     }
   }
 }
