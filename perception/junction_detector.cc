@@ -11,6 +11,7 @@
 
 #include "perception/appearance.h"
 #include "perception/floor_band.h"
+#include "perception/floor_lights.h"
 #include "perception/floor_texture.h"
 #include "perception/junction_candidates.h"
 #include "perception/junction_memory.h"
@@ -20,7 +21,6 @@
 #include "perception/junction_support.h"
 #include "perception/line_ridge.h"
 #include "perception/line_segments.h"
-#include "perception/floor_lights.h"
 #include "perception/lower_edge.h"
 #include "perception/reflected_band.h"
 #include "perception/single_junction.h"
@@ -404,11 +404,12 @@ void TakeOtherWallsBandAsReflected(const cv::Mat& color, JunctionLine* const lin
                                      2 * kBaseboardMaxTurnDeg)) {
     return;  // Already between its baseboard and its reflection.
   }
-  double seen_height = 0, other_height = 0, seen_turn = 0, other_turn = 0;
+  // The seen wall's turn is already in turn[seen]; these are asked only whether and how high.
+  double seen_height = 0, other_height = 0, unused_turn = 0, other_turn = 0;
   if (!FindReflectedJunction(color, *lines[seen], vp, seen == 0, 2 * kBaseboardMaxTurnDeg,
-                             &seen_turn, kMaxOneWallGlossResidual) ||
+                             &unused_turn, kMaxOneWallGlossResidual) ||
       !BandAboveJunction(color, *lines[seen], vp, seen == 0, 2 * kBaseboardMaxTurnDeg,
-                         &seen_height, &seen_turn) ||
+                         &seen_height, &unused_turn) ||
       !BandAboveJunction(color, *lines[other], vp, other == 0, 2 * kBaseboardMaxTurnDeg,
                          &other_height, &other_turn)) {
     return;

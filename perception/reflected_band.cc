@@ -87,6 +87,15 @@ class TurnedProfile {
   std::vector<cv::Vec3d> colours_;
 };
 
+// The middle in slope, in candidates from the junction (negative), of the band from candidate
+// `top` down to the junction, which lies `below` radians below the horizontal.
+double MiddleInSlope(double below, int top) {
+  const double step = kStepDeg * M_PI / 180.0;
+  const double below_top = below + top * step;
+  const double middle_angle = std::atan(0.5 * (std::tan(below) + std::tan(below_top)));
+  return (middle_angle - below) / step;
+}
+
 // Whether the profile's band from candidate `top` to `bottom` reads as a baseboard above its
 // reflection, meeting at `middle` (fractional candidates): wall, baseboard, reflection, floor. The
 // floor beside the reflection mirrors the wall above the baseboard, so the step from the floor to
@@ -163,12 +172,7 @@ bool FindReflectedJunction(const cv::Mat& image, const JunctionLine& junction,
   // The middle in slope of the band from its top to the junction, its lower edge.
   const double step = kStepDeg * M_PI / 180.0;
   const double below = profile.below;
-  const auto middle_below = [&](int band_top) {
-    const double below_top = below + band_top * step;
-    const double middle_angle = std::atan(0.5 * (std::tan(below) + std::tan(below_top)));
-    return (middle_angle - below) / step;  // Candidates, negative.
-  };
-  double middle = middle_below(top);
+  double middle = MiddleInSlope(below, top);
   if (!ReadsAsReflection(profile, top, middle, 0, false, max_gloss_residual)) {
     // A reflection much darker than its baseboard makes the junction itself the largest change:
     // the band's top is then the largest change beyond it, toward the wall.
@@ -176,7 +180,7 @@ bool FindReflectedJunction(const cv::Mat& image, const JunctionLine& junction,
     const int wall_steps = static_cast<int>(max_turn_deg / kStepDeg);
     top = profile.LargestChange(-wall_steps + 2, top - kMinBandSteps, &change);
     if (top == 0 || !(below + top * step > 0)) return false;
-    middle = middle_below(top);
+    middle = MiddleInSlope(below, top);
     if (!ReadsAsReflection(profile, top, middle, 0, false, max_gloss_residual)) return false;
   }
   *turn_deg = middle * kStepDeg;
@@ -197,10 +201,9 @@ bool BandAboveJunction(const cv::Mat& image, const JunctionLine& junction,
   const cv::Vec3d board = profile.Mean(top + 2, std::min(top + 6, -2));
   if (L1(board - wall) < kMinContrast) return false;
   const double step = kStepDeg * M_PI / 180.0;
-  const double below = profile.below, below_top = below + top * step;
-  *relative_height = 1.0 - std::tan(below_top) / std::tan(below);
-  const double middle_angle = std::atan(0.5 * (std::tan(below) + std::tan(below_top)));
-  *middle_turn_deg = (middle_angle - below) / step * kStepDeg;
+  const double below = profile.below;
+  *relative_height = 1.0 - std::tan(below + top * step) / std::tan(below);
+  *middle_turn_deg = MiddleInSlope(below, top) * kStepDeg;
   return true;
 }
 
