@@ -10,7 +10,9 @@ namespace {
 void CapSide(const std::vector<double>& weights, double max_ratio, std::vector<double>* out) {
   out->assign(weights.begin(), weights.end());
   if (out->empty()) return;
-  std::vector<double> sorted(weights.begin(), weights.end());
+  // The median's working copy, in the thread's buffer (it keeps its memory from solve to solve).
+  thread_local std::vector<double> sorted;
+  sorted.assign(weights.begin(), weights.end());
   const size_t mid = sorted.size() / 2;
   std::nth_element(sorted.begin(), sorted.begin() + mid, sorted.end());
   const double cap = max_ratio * sorted[mid];
