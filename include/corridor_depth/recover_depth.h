@@ -30,7 +30,7 @@ struct RecoverDepthOptions {
   RasterizerOptions rasterizer_options;        // Options of every rasteriser.
   int points_per_line = 30;                    // N: points sampled along each junction (paper III-B).
   bool level_roll = true;                      // Estimate the camera's roll about its optical axis from the walls' vertical edges and, when the evidence is clear, recover the frame turned level (result->roll); the depth is turned back.
-  std::string solver_evidence = "lines";       // What the solver named by `solver` fits (chosen_solve.h): "lines", points_per_line points on each fitted junction line; "edges", each junction's measured sub-pixel edge points with weights (a side with fewer than points_per_line of them falls back to its line's points).
+  std::string solver_evidence = "edges";       // What the solver named by `solver` fits (chosen_solve.h): "edges", each junction's measured sub-pixel edge points with weights (a side with fewer than points_per_line of them falls back to its line's points); "lines", points_per_line points on each fitted junction line.
   double min_width = 0.5;                      // Narrower estimates are refused (kImplausibleGeometry), m.
   double max_width = 5.0;                      // Wider estimates are refused, m: wider than the corridors the box model is for (a hall), or a line on a wall (a rail, a wainscot's top) taken for the floor's edge.
   double max_abs_yaw = 1.2;                    // |yaw| above this is implausible, rad (~69 deg).

@@ -176,7 +176,10 @@ TEST(ChosenSolveTest, TheLayoutIsJointOnLines) {
   EXPECT_EQ(layout.solver, "joint");
   EXPECT_EQ(layout.solver_evidence, "lines");
   EXPECT_TRUE(ChosenSolveDiffers(options));
-  EXPECT_FALSE(ChosenSolveDiffers(RecoverDepthOptions()));  // joint on lines by default.
+  EXPECT_TRUE(ChosenSolveDiffers(RecoverDepthOptions()));  // joint on edges by default.
+  RecoverDepthOptions on_lines;
+  on_lines.solver_evidence = "lines";
+  EXPECT_FALSE(ChosenSolveDiffers(on_lines));  // The layout's own solve: it runs once.
 }
 
 }  // namespace

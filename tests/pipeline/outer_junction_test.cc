@@ -138,6 +138,8 @@ TEST(OuterJunctionTest, AFrameRefusedForAnObjectsFootIsRecoveredOnTheWallsFoot) 
     ASSERT_FALSE(f.frame.bgr.empty()) << c.name << " " << c.scene << " " << c.index;
     RecoverDepthOptions first_layout;
     first_layout.min_confidence = 0;  // Never refused, so never retried.
+    // The layout's own solve, on which the refusal and the retry are decided.
+    first_layout.solver_evidence = "lines";
     RecoverDepthResult result;
     ASSERT_TRUE(RecoverDepth(f.frame.bgr, f.camera, first_layout, &result).ok());
     EXPECT_GT(std::abs(result.geometry.width - f.true_width) / f.true_width, 0.05)
