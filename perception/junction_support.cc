@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <utility>
+#include <vector>
 
 #include <Eigen/Geometry>
 
@@ -33,7 +35,105 @@ void KeepWhere(const std::vector<Eigen::Vector2d>& from, Keep keep,
 struct RefineScratch {
   std::vector<Eigen::Vector2d> side, near, fitted;
   std::vector<int> bins;
+  std::vector<Eigen::Vector2d> ends[2];  // A support's nearest and farthest thirds (UnbendLine).
+  std::vector<double> along;
 };
+
+// The least step, px, between the two ends of a line's support (each end's pixels from the other
+// end's fit) that makes it two edges: one straight edge's pixels scatter by well under a
+// pixel about its fit, and the next edge beside a junction (a grout line, a baseboard's top) lies
+// a few pixels off.
+constexpr double kMinBendStepPx = 1.5;
+
+// Each end's pixels lie within `distance` of the bent line, so two edges it bends between are a
+// few distances apart: a larger step is two ends' fits thrown apart (short ends, or pixels of
+// another structure, a door's foot, at one end), not a bend.
+constexpr double kMaxBendSteps = 3.0;
+
+// Within this of a line, px, an edge pixel is on it when lines are compared by their pixels: one
+// straight edge's pixels lie within it, and a line bent between two edges loses those of both.
+constexpr double kOnLinePx = 1.0;
+
+// How many of `pixels` lie within `distance` of `line` and, along `direction`, in [lo, hi].
+long CountNear(const std::vector<Eigen::Vector2d>& pixels, const Eigen::Vector3d& line,
+               double distance, const Eigen::Vector2d& direction, double lo, double hi) {
+  long n = 0;
+  for (const Eigen::Vector2d& p : pixels) {
+    const double t = p.dot(direction);
+    n += !(std::abs(line.dot(p.homogeneous())) > distance) & (t >= lo) & (t <= hi);
+  }
+  return n;
+}
+
+// The median of |line . p| over `pixels` (not empty); `buffer` is working memory.
+double MedianDistance(const std::vector<Eigen::Vector2d>& pixels, const Eigen::Vector3d& line,
+                      std::vector<double>* buffer) {
+  buffer->clear();
+  for (const Eigen::Vector2d& p : pixels) buffer->push_back(std::abs(line.dot(p.homogeneous())));
+  const auto middle = buffer->begin() + static_cast<std::ptrdiff_t>(buffer->size() / 2);
+  std::nth_element(buffer->begin(), middle, buffer->end());
+  return *middle;
+}
+
+// A line fitted across two edges (a junction over part of its length, a grout line or a
+// baseboard's top a few pixels beside it over the rest) bends between them: the fits of its
+// support's nearest and farthest thirds each follow one edge, and each third's pixels lie a step
+// off the other third's fit. Then, of the line and the two thirds' fits, the one with the most of
+// `side`'s pixels on it (within kOnLinePx) over the support's extent (the edge that runs the
+// whole way) is refitted on its pixels within `distance` into *line and *support. False, with
+// nothing changed, for a straight support.
+bool UnbendLine(const std::vector<Eigen::Vector2d>& side, double distance, Eigen::Vector3d* line,
+                std::vector<Eigen::Vector2d>* support, RefineScratch* scratch) {
+  if (support->size() < 24) return false;
+  const Eigen::Vector2d direction(line->y(), -line->x());
+  std::vector<double>& along = scratch->along;
+  along.clear();
+  for (const Eigen::Vector2d& p : *support) along.push_back(p.dot(direction));
+  const auto [first, last] = std::minmax_element(along.begin(), along.end());
+  const double lo = *first, hi = *last;
+  const size_t third = along.size() / 3;
+  std::nth_element(along.begin(), along.begin() + static_cast<std::ptrdiff_t>(third), along.end());
+  const double low = along[third];
+  std::nth_element(along.begin(), along.end() - static_cast<std::ptrdiff_t>(third) - 1,
+                   along.end());
+  const double high = along[along.size() - third - 1];
+  std::vector<Eigen::Vector2d>* ends = scratch->ends;
+  ends[0].clear();
+  ends[1].clear();
+  for (const Eigen::Vector2d& p : *support) {
+    const double t = p.dot(direction);
+    if (t < low) ends[0].push_back(p);
+    if (t > high) ends[1].push_back(p);
+  }
+  Eigen::Vector3d fits[2];
+  for (int e = 0; e < 2; ++e) {
+    if (ends[e].size() < 8 || !FitLineLeastDistance(ends[e], &fits[e])) return false;
+  }
+  double step = 0;
+  for (int e = 0; e < 2; ++e) {
+    step = std::max(step, MedianDistance(ends[e], fits[1 - e], &along));
+  }
+  if (step < kMinBendStepPx || step > kMaxBendSteps * distance) return false;
+  // Over the support's own extent: which line the pixels there follow, not which edge runs on
+  // further (a rail or a baseboard's top beyond a junction's hidden stretch).
+  long most = CountNear(side, *line, kOnLinePx, direction, lo, hi);
+  const Eigen::Vector3d* best = nullptr;
+  for (const Eigen::Vector3d& fit : fits) {
+    const long n = CountNear(side, fit, kOnLinePx, direction, lo, hi);
+    if (n > most) most = n, best = &fit;
+  }
+  if (best == nullptr) return false;
+  Eigen::Vector3d unbent = *best;
+  for (int round = 0; round < 2; ++round) {
+    SupportPixels(side, unbent, distance, support);
+    Eigen::Vector3d refit;
+    if (!FitLineLeastDistance(*support, &refit)) break;
+    unbent = refit;
+  }
+  SupportPixels(side, unbent, distance, support);
+  *line = unbent;
+  return true;
+}
 
 }  // namespace
 
@@ -114,6 +214,7 @@ JunctionLine RefineJunction(const JunctionCandidate& candidate,
     fitted.swap(support);
   }
   if (!final_support) SupportPixels(pixels_for(line, distance), line, distance, &support);
+  UnbendLine(side, distance, &line, &support, &scratch);
   out.line = line;
   const Eigen::Vector2d direction(line.y(), -line.x());
   const Eigen::Vector2d origin = -line.z() * line.head<2>();

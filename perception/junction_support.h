@@ -17,9 +17,11 @@ void SupportPixels(const std::vector<Eigen::Vector2d>& side, const Eigen::Vector
 
 // The final JunctionLine of a candidate: refitted (FitLineLeastDistance, up to three rounds,
 // the first within twice `distance`) on the edge pixels on its floor side of `vp`
-// (FloorSidePixels) that lie within `distance` of it; the extent of that support along the line,
-// the number of whole pixels it covers, and a confidence from the boundary score and that length
-// over a quarter of `image_height`. With fewer than 8 support pixels the extent is the
+// (FloorSidePixels) that lie within `distance` of it, and, where that fit bends between two edges a
+// few pixels apart (a junction near the camera, a grout line or a baseboard's top beside it far
+// off, or the other way round), refitted on the one of the two that runs the whole way; the
+// extent of that support along the line, the number of whole pixels it covers, and a confidence
+// from the boundary score and that length over a quarter of `image_height`. With fewer than 8 support pixels the extent is the
 // candidate's own ends.
 JunctionLine RefineJunction(const JunctionCandidate& candidate,
                             const std::vector<Eigen::Vector2d>& edges, const Eigen::Vector2d& vp,

@@ -101,5 +101,27 @@ TEST(RefineJunctionTest, TooFewSupportPixelsKeepTheCandidatesEnds) {
   EXPECT_NEAR(line.confidence, 2 / 120.0, 1e-12);  // The boundary score is clamped to 1.
 }
 
+TEST(RefineJunctionTest, ALineBentAcrossTwoEdgesFollowsTheOneThatRunsTheWholeWay) {
+  // The junction's pixels from u = 100 to 350, one per column; a grout line through the same
+  // vanishing point on its floor side, 5 px lower at u = 100 (4.5 px across) and closing in on it
+  // toward the vanishing point, from u = 100 to 250. The candidate is the grout line: its first
+  // round (within 4 px) takes the grout's pixels near the camera and the junction's far off,
+  // where the two are within 2 px, and a least-squares line bends between the two edges.
+  const Eigen::Vector2d vp = OnLine(400);
+  const auto grout = [](double u) -> Eigen::Vector2d {
+    return OnLine(u) + Eigen::Vector2d(0, 5 * (400 - u) / 300);
+  };
+  std::vector<Eigen::Vector2d> edges;
+  for (int u = 100; u <= 350; ++u) edges.push_back(OnLine(u));
+  for (int u = 100; u <= 250; ++u) edges.push_back(grout(u));
+  const JunctionCandidate candidate{LineThrough(grout(100), vp), 0.6};
+  const JunctionLine line = RefineJunction(candidate, edges, vp, true, 2.0, 480);
+  // On the junction, which runs the whole way, not between the two.
+  for (int u : {100, 200, 300, 350}) {
+    EXPECT_NEAR(line.line.dot(OnLine(u).homogeneous()), 0, 0.05) << u;
+  }
+  EXPECT_NEAR((line.near_end - OnLine(100)).norm(), 0, 0.5);
+}
+
 }  // namespace
 }  // namespace corridor

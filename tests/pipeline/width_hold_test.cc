@@ -23,6 +23,7 @@ struct HiddenJunction {
   synth::Frame frame;         // Frame 10 of the paper preset's Cord_E05: a box hides the
                               // right junction.
   synth::Frame before;        // Frame 9, where both junctions are seen.
+  synth::Frame confirmed;     // Frame 8: both junctions seen, their ceiling sides alike.
   CorridorGeometry previous;  // The true geometry of frame 9.
 };
 
@@ -36,6 +37,9 @@ HiddenJunction MakeHiddenJunction() {
                     .ok());
     EXPECT_TRUE(synth::RenderFrame(synth::BuildScene(preset.scene), preset.camera,
                                    preset.poses.at(9), &h.before)
+                    .ok());
+    EXPECT_TRUE(synth::RenderFrame(synth::BuildScene(preset.scene), preset.camera,
+                                   preset.poses.at(8), &h.confirmed)
                     .ok());
     h.previous = h.before.truth;
   }
@@ -115,15 +119,15 @@ TEST(WidthHoldTest, AWiderWidthIsNotHeld) {
 // two ceiling junctions, each searched alone, agree, are kept.
 TEST(WidthHoldTest, AWidthItsOwnCeilingConfirmsIsNotHeld) {
   const HiddenJunction h = MakeHiddenJunction();
-  const CorridorGeometry& truth = h.before.truth;
+  const CorridorGeometry& truth = h.confirmed.truth;
   CorridorGeometry wrong = truth;
   wrong.width = 1.3 * truth.width;
-  const RecoverDepthResult alone = RecoverWith(h, HoldOptions(), nullptr, &h.before.bgr);
+  const RecoverDepthResult alone = RecoverWith(h, HoldOptions(), nullptr, &h.confirmed.bgr);
   // The premise: alone the frame is right, and much narrower than the wrong previous width.
   ASSERT_NEAR(alone.geometry.width, truth.width, 0.03 * truth.width);
   ASSERT_LT(alone.geometry.width, 0.85 * wrong.width);
   EXPECT_TRUE(alone.ceiling_trusted);
-  const RecoverDepthResult result = RecoverWith(h, HoldOptions(), &wrong, &h.before.bgr);
+  const RecoverDepthResult result = RecoverWith(h, HoldOptions(), &wrong, &h.confirmed.bgr);
   EXPECT_FALSE(result.width_held) << result.fallback;
   EXPECT_DOUBLE_EQ(result.geometry.width, alone.geometry.width);
 }
