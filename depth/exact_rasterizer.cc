@@ -81,14 +81,15 @@ struct RowConstants {
   float dr0, dr_step;  // d.r (corridor axis) at u = 0, and its change per pixel.
 };
 
-using RowKernel = void (*)(const BoxModel&, const RowConstants&, int, int, float*);
+using RowKernel = void (*)(const BoxModel&, const RowConstants&, int, int, float, float*);
 
-// Pixels [first, last) of one row of the undistorted image. kEndWall: an end wall may hide what is
-// beyond; kCutWalls (no ceiling): wall points above max_height get 0. Bitwise, not short-circuit,
+// Pixels [first, last) of one row of the undistorted image; `none` where there is no estimate.
+// kEndWall: an end wall may hide what is beyond; kCutWalls (no ceiling): wall points above
+// max_height get `none`. Bitwise, not short-circuit,
 // operators and selects: no branches, so the loop vectorises.
 template <bool kEndWall, bool kCutWalls>
 CORRIDOR_ALWAYS_INLINE inline void RowBody(const BoxModel& box, const RowConstants& row, int first,
-                                           int last, float* out) {
+                                           int last, float none, float* out) {
   const float inf = std::numeric_limits<float>::infinity();
   for (int u = first; u < last; ++u) {
     const float mr = row.mr0 + row.mr_step * u;
@@ -110,13 +111,14 @@ CORRIDOR_ALWAYS_INLINE inline void RowBody(const BoxModel& box, const RowConstan
     }
     bool keep = z <= box.max_range;
     if (kCutWalls) keep = keep & !(wall & (z * row.nr < box.min_wall_y));
-    out[u] = keep ? z : 0.0f;
+    out[u] = keep ? z : none;
   }
 }
 
 template <bool kEndWall, bool kCutWalls>
-void Row(const BoxModel& box, const RowConstants& row, int first, int last, float* out) {
-  RowBody<kEndWall, kCutWalls>(box, row, first, last, out);
+void Row(const BoxModel& box, const RowConstants& row, int first, int last, float none,
+         float* out) {
+  RowBody<kEndWall, kCutWalls>(box, row, first, last, none, out);
 }
 
 #ifdef CORRIDOR_AVX2_VARIANTS
@@ -124,8 +126,8 @@ void Row(const BoxModel& box, const RowConstants& row, int first, int last, floa
 // as in the baseline loop).
 template <bool kEndWall, bool kCutWalls>
 __attribute__((target("avx2"))) void RowAvx2(const BoxModel& box, const RowConstants& row,
-                                             int first, int last, float* out) {
-  RowBody<kEndWall, kCutWalls>(box, row, first, last, out);
+                                             int first, int last, float none, float* out) {
+  RowBody<kEndWall, kCutWalls>(box, row, first, last, none, out);
 }
 #endif
 
@@ -183,6 +185,16 @@ std::shared_ptr<const RayTable> ExactRasterizer::TableFor(const Camera& camera) 
 
 Status ExactRasterizer::Render(const CorridorGeometry& geometry, const Camera& camera,
                                cv::Mat* depth) const {
+  return RenderWith(geometry, camera, 0.0f, depth);
+}
+
+Status ExactRasterizer::RenderNoEstimateNaN(const CorridorGeometry& geometry,
+                                            const Camera& camera, cv::Mat* depth) const {
+  return RenderWith(geometry, camera, std::numeric_limits<float>::quiet_NaN(), depth);
+}
+
+Status ExactRasterizer::RenderWith(const CorridorGeometry& geometry, const Camera& camera,
+                                   float none, cv::Mat* depth) const {
   std::string why;
   if (!camera.CheckIntrinsics(&why)) return Status::InvalidArgument("camera: " + why);
   const Status valid = CheckGeometryForRendering(geometry);
@@ -195,7 +207,10 @@ Status ExactRasterizer::Render(const CorridorGeometry& geometry, const Camera& c
       float* out = depth->ptr<float>(v);
       const float* rx = table->row_x(v);
       const float* ry = table->row_y(v);
-      for (int u = 0; u < camera.image_width; ++u) out[u] = box.Depth(rx[u], ry[u]);
+      for (int u = 0; u < camera.image_width; ++u) {
+        const float z = box.Depth(rx[u], ry[u]);
+        out[u] = z > 0 || none == 0 ? z : none;  // Depth's 0 is no estimate.
+      }
     }
     return Status::Ok();
   }
@@ -222,12 +237,12 @@ Status ExactRasterizer::Render(const CorridorGeometry& geometry, const Camera& c
     int begin = 0, end = 0;
     if (options_.plane_spans && !end_wall) PlaneSpan(box, row, camera.image_width, &begin, &end);
     if (begin < end) {
-      // The plane is nearest: RowBody's depth there is z_plane, or 0 beyond the range.
-      std::fill(out + begin, out + end, row.z_plane <= box.max_range ? row.z_plane : 0.0f);
-      kernel(box, row, 0, begin, out);
-      kernel(box, row, end, camera.image_width, out);
+      // The plane is nearest: RowBody's depth there is z_plane, or none beyond the range.
+      std::fill(out + begin, out + end, row.z_plane <= box.max_range ? row.z_plane : none);
+      kernel(box, row, 0, begin, none, out);
+      kernel(box, row, end, camera.image_width, none, out);
     } else {
-      kernel(box, row, 0, camera.image_width, out);
+      kernel(box, row, 0, camera.image_width, none, out);
     }
   }
   return Status::Ok();

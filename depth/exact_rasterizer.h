@@ -17,8 +17,14 @@ class ExactRasterizer : public DepthRasterizer {
   std::string Name() const override { return "exact"; }
   Status Render(const CorridorGeometry& geometry, const Camera& camera,
                 cv::Mat* depth) const override;
+  // NaN written where Render writes 0, in the same pass.
+  Status RenderNoEstimateNaN(const CorridorGeometry& geometry, const Camera& camera,
+                             cv::Mat* depth) const override;
 
  private:
+  // Render with `none` (0 or NaN) where there is no estimate.
+  Status RenderWith(const CorridorGeometry& geometry, const Camera& camera, float none,
+                    cv::Mat* depth) const;
   std::shared_ptr<const RayTable> TableFor(const Camera& camera) const;
 
   const RasterizerOptions options_;

@@ -229,9 +229,8 @@ Status DepthRecoverer::FinishLayout(const Camera& camera, RecoverDepthResult* re
     result->depth = std::move(own.depth_memory);
   }
   const uchar* const given = result->depth.datastart;
-  Status status = rasterizer_->Render(result->geometry, camera, &result->depth);
+  Status status = rasterizer_->RenderNoEstimateNaN(result->geometry, camera, &result->depth);
   if (!status.ok() && given != nullptr && result->depth.datastart == given) result->depth.release();
-  if (status.ok()) MarkNoEstimateNaN(&result->depth);
   result->times.rasterize = SecondsSince(stage);
   return finish(status);
 }

@@ -39,6 +39,11 @@ class DepthRasterizer {
   // Writes a CV_32F depth image (metres, camera-frame z, 0 = no estimate) of the camera's size.
   virtual Status Render(const CorridorGeometry& geometry, const Camera& camera,
                         cv::Mat* depth) const = 0;
+  // The same depths with NaN for no estimate (every pixel Render leaves not positive), as the
+  // pipeline reports them: Render's image marked afterwards, unless a rasteriser writes NaN in
+  // its own pass.
+  virtual Status RenderNoEstimateNaN(const CorridorGeometry& geometry, const Camera& camera,
+                                     cv::Mat* depth) const;
 };
 
 std::unique_ptr<DepthRasterizer> CreateRasterizer(RasterizerType type,

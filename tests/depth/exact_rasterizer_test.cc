@@ -1,5 +1,7 @@
 #include "depth/exact_rasterizer.h"
 
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include "box_truth.h"
@@ -123,6 +125,51 @@ TEST(ExactRasterizerTest, PlaneSpansGiveTheSameDepthsAsEveryPixelDivided) {
   ASSERT_TRUE(ExactRasterizer(RasterizerOptions()).Render(TestGeometry(0, 0, 0, 2.0), camera, &depth).ok());
   const double y = (camera.image_height - 1 - camera.cy) / camera.fy;
   EXPECT_NEAR(depth.at<float>(camera.image_height - 1, camera.image_width / 2), 0.66 / y, 1e-5);
+}
+
+// RenderNoEstimateNaN, NaN written in the rows' own pass, against Render's depths with every
+// pixel not positive made NaN: bitwise the same (NaN where Render has no estimate) over random
+// poses, end walls, ceilings and ranges, with and without lens distortion, on both row kernels.
+TEST(ExactRasterizerTest, NoEstimateNaNIsRenderWithItsZerosMarked) {
+  cv::RNG rng(47);
+  for (int trial = 0; trial < 60; ++trial) {
+    Camera camera = TestCamera();
+    camera.image_width = rng.uniform(8, 300);
+    camera.image_height = rng.uniform(8, 200);
+    camera.fx = camera.fy = rng.uniform(50.0, 600.0);
+    camera.cx = rng.uniform(0.0, 1.0) * camera.image_width;
+    camera.cy = rng.uniform(0.0, 1.0) * camera.image_height;
+    if (trial % 4 == 3) camera.distortion = {-0.2, 0.05, 0.0, 0.0, 0.0};
+    const double width = rng.uniform(1.0, 4.0);
+    CorridorGeometry g = TestGeometry(rng.uniform(-0.5, 0.5), rng.uniform(-0.4, 0.5),
+                                      rng.uniform(-0.4, 0.4) * width, width,
+                                      trial % 2 == 0 ? 0.0 : rng.uniform(1.0, 4.0));
+    if (trial % 3 == 0) g.end_distance = rng.uniform(2.0, 30.0);
+    RasterizerOptions options;
+    options.max_range = rng.uniform(2.0, 60.0);
+    options.max_height = rng.uniform(0.8, 3.0);
+    options.use_avx2 = trial % 5 != 0;
+    const ExactRasterizer rasterizer(options);
+    cv::Mat plain, marked;
+    ASSERT_TRUE(rasterizer.Render(g, camera, &plain).ok());
+    ASSERT_TRUE(rasterizer.RenderNoEstimateNaN(g, camera, &marked).ok());
+    ASSERT_EQ(marked.size(), plain.size());
+    int nans = 0;
+    for (int v = 0; v < plain.rows; ++v) {
+      for (int u = 0; u < plain.cols; ++u) {
+        const float z = plain.at<float>(v, u), got = marked.at<float>(v, u);
+        if (z > 0) {
+          ASSERT_EQ(got, z) << "trial " << trial << " at " << u << "," << v;
+        } else {
+          ASSERT_TRUE(std::isnan(got)) << "trial " << trial << " at " << u << "," << v;
+          ++nans;
+        }
+      }
+    }
+    if (trial == 0) {
+      EXPECT_GT(nans, 0);
+    }
+  }
 }
 
 TEST(ExactRasterizerTest, HonoursLensDistortionThroughRayTable) {

@@ -1,6 +1,10 @@
 #include "corridor_depth/rasterizer.h"
 
+#include <cmath>
+
 #include <gtest/gtest.h>
+
+#include "box_truth.h"
 
 namespace corridor {
 namespace {
@@ -32,6 +36,36 @@ TEST(RasterizerFactoryTest, GeometryChecks) {
   EXPECT_FALSE(CheckGeometryForRendering(g).ok());
   g.yaw = 1.6;
   EXPECT_EQ(CheckGeometryForRendering(g).code(), StatusCode::kImplausibleGeometry);
+}
+
+// The base class's RenderNoEstimateNaN (the paper rasteriser has no pass of its own): Render's
+// depths, every pixel not positive made NaN; a bad geometry's status passed on.
+TEST(RasterizerTest, PaperNoEstimateNaNIsRenderWithItsZerosMarked) {
+  std::unique_ptr<DepthRasterizer> r;
+  ASSERT_TRUE(CreateRasterizer("paper", RasterizerOptions(), &r).ok());
+  const Camera camera = testing::TestCamera();
+  const CorridorGeometry g = testing::TestGeometry(0.1, 0.05, 0.2, 2.2, 2.6);
+  cv::Mat plain, marked;
+  ASSERT_TRUE(r->Render(g, camera, &plain).ok());
+  ASSERT_TRUE(r->RenderNoEstimateNaN(g, camera, &marked).ok());
+  ASSERT_EQ(marked.size(), plain.size());
+  int nans = 0;
+  for (int v = 0; v < plain.rows; ++v) {
+    for (int u = 0; u < plain.cols; ++u) {
+      const float z = plain.at<float>(v, u), got = marked.at<float>(v, u);
+      if (z > 0) {
+        ASSERT_EQ(got, z) << u << "," << v;
+      } else {
+        ASSERT_TRUE(std::isnan(got)) << u << "," << v;
+        ++nans;
+      }
+    }
+  }
+  EXPECT_GT(nans, 0);
+  CorridorGeometry outside = g;
+  outside.offset = 5;
+  EXPECT_EQ(r->RenderNoEstimateNaN(outside, camera, &marked).code(),
+            r->Render(outside, camera, &plain).code());
 }
 
 }  // namespace
