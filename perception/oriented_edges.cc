@@ -177,6 +177,42 @@ bool EdgesFromTop(const cv::Mat& bgr, int to, ImageEdges* out) {
   return true;
 }
 
+// Extends *cache, the image's rows [0, from) (EdgesFromTop), to rows [0, to): the same edges as
+// EdgesFromTop(bgr, to, cache), without blurring the rows it has again or taking their gradient
+// again. The blurred rows read the image's rows around them (they are the same at any `to`), and
+// so does each gradient row but the last, whose row below was a reflection: the rows from `from`
+// are blurred and the gradient of those from from - 1 taken; Canny runs over all of them, its
+// hysteresis joining edges across rows. The matrices are new (views of the old stay valid). False
+// (*cache untouched) when the cache is not such rows of this image, or `to` is not below them.
+bool ExtendEdgesDown(const cv::Mat& bgr, int to, ImageEdges* cache) {
+  const int from = cache->edges.rows;
+  if (from < 2 || to <= from || to > bgr.rows || cache->image_rows != bgr.rows ||
+      cache->edges.cols != bgr.cols || cache->smooth.rows != from ||
+      cache->smooth.cols != bgr.cols || cache->smooth.type() != bgr.type() ||
+      cache->dx.rows != from || cache->dy.rows != from) {
+    return false;
+  }
+  cv::Mat more;
+  if (!BinomialBlur(bgr, from, to, 5, &more).ok()) return false;
+  ImageEdges out;
+  out.image_rows = bgr.rows;
+  out.smooth.create(to, bgr.cols, bgr.type());
+  cache->smooth.copyTo(out.smooth.rowRange(0, from));
+  more.copyTo(out.smooth.rowRange(from, to));
+  // The gradient of rows [from - 2, to) taken alone: its first row (a reflection above) dropped.
+  cv::Mat gx, gy;
+  ColorGradient(out.smooth.rowRange(from - 2, to), &gx, &gy, nullptr);
+  out.dx.create(to, bgr.cols, CV_16S);
+  out.dy.create(to, bgr.cols, CV_16S);
+  cache->dx.rowRange(0, from - 1).copyTo(out.dx.rowRange(0, from - 1));
+  cache->dy.rowRange(0, from - 1).copyTo(out.dy.rowRange(0, from - 1));
+  gx.rowRange(1, gx.rows).copyTo(out.dx.rowRange(from - 1, to));
+  gy.rowRange(1, gy.rows).copyTo(out.dy.rowRange(from - 1, to));
+  if (!CannyFromGradients(out.dx, out.dy, 20, 60, true, &out.edges).ok()) return false;
+  *cache = std::move(out);
+  return true;
+}
+
 }  // namespace
 
 bool ComputeImageEdges(const cv::Mat& bgr, ImageEdges* out) {
@@ -194,7 +230,8 @@ OrientedEdges ComputeOrientedEdges(const cv::Mat& bgr, int top, int bottom, Imag
   if (cache != nullptr) {
     if (!cache->Covers(bgr, bottom)) {
       const int slack = kCacheSlackPercent * bgr.rows / 100;
-      if (!EdgesFromTop(bgr, std::min(bgr.rows, bottom + kBandMargin + slack), cache)) {
+      const int to = std::min(bgr.rows, bottom + kBandMargin + slack);
+      if (!ExtendEdgesDown(bgr, to, cache) && !EdgesFromTop(bgr, to, cache)) {
         return out;  // Not 8-bit: no edges.
       }
     }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -119,6 +120,45 @@ TEST(OrientedEdgesTest, BandFromSharedImageEdges) {
   ImageEdges other;
   EXPECT_FALSE(ComputeImageEdges(cv::Mat(), &other));
   EXPECT_FALSE(ComputeImageEdges(cv::Mat(10, 10, CV_32FC3, cv::Scalar(0, 0, 0)), &other));
+}
+
+// A cache extended down to a lower band holds what a cache filled for that band at once holds:
+// the same blurred rows, gradients and edges (the rows it had are not blurred again, nor their
+// gradients taken again, but Canny runs over all rows). Views cut from it before stay as they
+// were. A textured image, so that hysteresis chains cross the rows where the two fills meet.
+TEST(OrientedEdgesTest, ExtendedCacheIsTheCacheFilledAtOnce) {
+  cv::Mat image(240, 200, CV_8UC3);
+  cv::RNG(5).fill(image, cv::RNG::UNIFORM, 60, 190);
+  cv::GaussianBlur(image, image, cv::Size(0, 0), 2.0);
+  for (int k = 0; k < 12; ++k) {
+    cv::line(image, cv::Point(7 * k, 0), cv::Point(199 - 5 * k, 239),
+             cv::Scalar(20 * k, 240 - 15 * k, 90), 2);
+  }
+  int compared = 0;
+  for (const int first_bottom : {40, 90, 150}) {
+    for (const int second_bottom : {first_bottom + 3, first_bottom + 40, 239}) {
+      ImageEdges extended;
+      const OrientedEdges before = ComputeOrientedEdges(image, 5, first_bottom, &extended);
+      const cv::Mat kept = before.edges.clone();
+      const int had = extended.edges.rows;
+      ComputeOrientedEdges(image, 5, second_bottom, &extended);
+      ImageEdges at_once;
+      ComputeOrientedEdges(image, 5, second_bottom, &at_once);
+      const std::string where =
+          std::to_string(first_bottom) + " then " + std::to_string(second_bottom);
+      if (extended.edges.rows == had) continue;  // Covered already.
+      ASSERT_EQ(extended.edges.size(), at_once.edges.size()) << where;
+      EXPECT_EQ(cv::norm(extended.smooth, at_once.smooth, cv::NORM_INF), 0.0) << where;
+      EXPECT_EQ(cv::norm(extended.dx, at_once.dx, cv::NORM_INF), 0.0) << where;
+      EXPECT_EQ(cv::norm(extended.dy, at_once.dy, cv::NORM_INF), 0.0) << where;
+      EXPECT_EQ(cv::norm(extended.edges, at_once.edges, cv::NORM_INF), 0.0) << where;
+      EXPECT_EQ(extended.image_rows, image.rows);
+      EXPECT_EQ(cv::norm(before.edges, kept, cv::NORM_INF), 0.0) << where;
+      EXPECT_GT(cv::countNonZero(at_once.edges), 500) << where;
+      ++compared;
+    }
+  }
+  EXPECT_EQ(compared, 6);
 }
 
 // A horizontal edge (a dark lower half): samples along it hit, those beside it or across it
