@@ -16,16 +16,70 @@
 namespace corridor {
 namespace {
 
-// Projects corridor-frame points to raw pixels and looks them up in an edge map.
+// Rows of edges computed beyond those a look-up reads: Canny's hysteresis there sees nearly what
+// it sees over the whole image.
+constexpr int kEdgeMargin = 8;
+
+// Projects corridor-frame points to raw pixels and looks them up in the edges of the working
+// image: the whole image's (UseEdges), or only those of the rows looked at (FromRow, then
+// NeedRowsFrom, in place of the whole image's: floor lines lie below the horizon, and the rows
+// above it are computed only when a candidate's corners are looked at).
 class EdgeProbe {
  public:
-  EdgeProbe(const cv::Mat& edges, const Camera& camera, const CorridorGeometry& g, int reach)
-      : camera_(camera), distorted_(camera.HasDistortion()), r_(g.pitch, g.yaw), reach_(reach) {
-    // cv::dilate by a (2 reach + 1)-square, into the thread's buffer (kept from frame to frame;
-    // one probe at a time).
-    thread_local cv::Mat thread_near;
-    MaxFilterSquare(edges, reach, &thread_near);
+  EdgeProbe(const cv::Mat& bgr, const Camera& camera, const CorridorGeometry& g, int reach)
+      : bgr_(bgr),
+        camera_(camera),
+        distorted_(camera.HasDistortion()),
+        r_(g.pitch, g.yaw),
+        reach_(reach) {}
+
+  // The whole image's edges, computed elsewhere.
+  void UseEdges(const cv::Mat& edges) {
+    edges_ = edges;
+    first_row_ = valid_row_ = 0;
+    thread_local cv::Mat thread_near;  // The thread's (one probe at a time), kept frame to frame.
+    MaxFilterSquare(edges_, reach_, &thread_near);
     near_ = thread_near;
+  }
+
+  // The edges of the rows from `first` down (the whole image's when first <= 0); false (none)
+  // for an image that is not 8-bit.
+  bool FromRow(int first) {
+    first = std::clamp(first, 0, bgr_.rows);
+    const int from = std::max(0, first - reach_ - kEdgeMargin);
+    cv::Mat dx, dy;
+    if (!ColorCannyEdges(bgr_, from, bgr_.rows, &dx, &dy, &edges_)) return false;
+    first_row_ = from;
+    valid_row_ = from == 0 ? 0 : first;
+    MaxFilterSquare(edges_, reach_, &near_);
+    return true;
+  }
+
+  // Makes the rows from `first` down readable: the rows above those it has are computed (with
+  // margins both ways) and joined to them where both sides are a margin away from their ends.
+  void NeedRowsFrom(int first) const {
+    first = std::max(0, first);
+    if (first >= valid_row_) return;
+    const int from = std::max(0, first - reach_ - kEdgeMargin);
+    // The rows had are used from here down.
+    const int seam = std::min(bgr_.rows, first_row_ + kEdgeMargin);
+    cv::Mat dx, dy, above;
+    ColorCannyEdges(bgr_, from, std::min(bgr_.rows, seam + kEdgeMargin), &dx, &dy, &above);
+    cv::Mat edges(bgr_.rows - from, bgr_.cols, CV_8U);
+    above.rowRange(0, seam - from).copyTo(edges.rowRange(0, seam - from));
+    edges_.rowRange(seam - first_row_, edges_.rows).copyTo(edges.rowRange(seam - from, edges.rows));
+    // The dilation changes only down to `reach` below the seam; below, it is the one had.
+    const int redone = std::min(edges.rows, seam - from + 2 * reach_ + 1);
+    cv::Mat near_above, near(edges.size(), CV_8U);
+    MaxFilterSquare(edges.rowRange(0, redone), reach_, &near_above);
+    const int kept_from = std::min(edges.rows, seam - from + reach_);
+    near_above.rowRange(0, kept_from).copyTo(near.rowRange(0, kept_from));
+    near_.rowRange(kept_from + from - first_row_, near_.rows)
+        .copyTo(near.rowRange(kept_from, near.rows));
+    edges_ = edges;
+    near_ = near;
+    first_row_ = from;
+    valid_row_ = from == 0 ? 0 : first;
   }
 
   // Raw pixel of (x, y, z), or false when behind the camera or within `reach` of the border.
@@ -33,8 +87,34 @@ class EdgeProbe {
     return ProjectCorridorPoint(camera_, distorted_, r_, x, y, z, reach_, pixel);
   }
 
+  // The row of (x, y, z) in the image, rounded down, for an undistorted camera in front of it;
+  // 0 otherwise (every row).
+  int RowAtMost(double x, double y, double z) const {
+    const Vec3<double> c = r_.ToCamera({x, y, z});
+    if (distorted_ || c.z < 0.05) return 0;
+    const double v = camera_.fy * c.y / c.z + camera_.cy;
+    return v > 0 && v < bgr_.rows ? static_cast<int>(std::floor(v)) - 1 : (v > 0 ? bgr_.rows : 0);
+  }
+
+  // The horizon's row, rounded down, for an undistorted camera: every floor point lies below it
+  // (the camera has no roll in the corridor frame). 0 otherwise.
+  int HorizonRow() const {
+    const Vec3<double> n = r_.FloorNormal();  // (0, cos pitch, sin pitch) in the camera.
+    if (distorted_ || !(n.y > 0)) return 0;
+    return std::max(0, static_cast<int>(std::floor(camera_.cy - camera_.fy * n.z / n.y)) - 1);
+  }
+
   // An edge pixel within `reach` px of p (in each direction): one look-up in the dilated map.
-  bool NearEdge(const cv::Point& p) const { return near_.at<uchar>(p) != 0; }
+  bool NearEdge(const cv::Point& p) const {
+    if (p.y < valid_row_) NeedRowsFrom(p.y - 2 * kEdgeMargin);
+    return near_.at<uchar>(p.y - first_row_, p.x) != 0;
+  }
+
+  // An edge at pixel (u, v).
+  bool EdgeAt(int v, int u) const {
+    if (v < valid_row_) NeedRowsFrom(v - 2 * kEdgeMargin);
+    return edges_.at<uchar>(v - first_row_, u) != 0;
+  }
 
   // Fraction of the visible samples of the segment a-b (corridor frame) near an edge; -1 when
   // fewer than `min_visible` samples are visible. Samples within `keep_away` px of `away` are
@@ -62,7 +142,11 @@ class EdgeProbe {
   const CorridorRotation<double>& rotation() const { return r_; }
 
  private:
-  cv::Mat near_;  // The edge map dilated by `reach`.
+  const cv::Mat& bgr_;
+  mutable cv::Mat edges_;      // CV_8U, 255 = edge: image rows [first_row_, rows).
+  mutable cv::Mat near_;       // edges_ dilated by `reach`.
+  mutable int first_row_ = 0;  // Image row of edges_'s first.
+  mutable int valid_row_ = 0;  // Look-ups from this image row down need no rows more.
   const Camera& camera_;
   bool distorted_;  // camera_.HasDistortion().
   CorridorRotation<double> r_;
@@ -102,6 +186,9 @@ Candidate Score(const EdgeProbe& probe, const CorridorGeometry& g, double d,
   // do not reach there.
   const double top = h - (g.HasCeiling() ? std::min(g.ceiling_height, 1.8) : 1.8);
   double beyond = 2;  // The cleaner side's fraction; 2 = neither side measurable.
+  // The corners' rows, above the horizon, are computed now if they have not been.
+  probe.NeedRowsFrom(std::min({probe.RowAtMost(xl, top, d), probe.RowAtMost(xl, h - 0.1, d),
+                               probe.RowAtMost(xr, top, d), probe.RowAtMost(xr, h - 0.1, d)}));
   for (double x : {xl, xr}) {
     cv::Point corner;
     if (!probe.Project(x, h, d, &corner)) continue;
@@ -203,18 +290,16 @@ Status DetectEndWall(const cv::Mat& full_bgr, const Camera& full_camera, const C
   if (work.scale == 1) work.bgr.release();
   const cv::Mat& bgr = work.scale == 1 ? full_bgr : work.bgr;
   const Camera& camera = work.camera;
-  // Edges of the colour gradient: a dark baseboard on a dark floor has no grey edge.
-  ImageEdges own;
-  const ImageEdges* image_edges = shared;
-  if (work.scale != 1 || shared == nullptr || !shared->Fits(bgr)) {
-    if (!ComputeImageEdges(bgr, &own)) {
-      estimate->reason = "the image is not 8-bit: no edges to search";
-      return Status::Ok();
-    }
-    image_edges = &own;
+  // Edges of the colour gradient: a dark baseboard on a dark floor has no grey edge. Shared ones
+  // are the whole image's; computed here, those of the rows below the horizon first (where every
+  // floor point lies), those above only as far up as a candidate's corners reach.
+  EdgeProbe probe(bgr, camera, g, o.reach_px);
+  if (work.scale == 1 && shared != nullptr && shared->Fits(bgr)) {
+    probe.UseEdges(shared->edges);
+  } else if (!probe.FromRow(probe.HorizonRow())) {
+    estimate->reason = "the image is not 8-bit: no edges to search";
+    return Status::Ok();
   }
-  const cv::Mat& edges = image_edges->edges;
-  const EdgeProbe probe(edges, camera, g, o.reach_px);
 
   // Near the vanishing point everything converges (grout, lights, doors): too few pixels to tell.
   const double min_span_px = std::max(24.0, o.min_span * camera.image_width);
@@ -268,7 +353,7 @@ Status DetectEndWall(const cv::Mat& full_bgr, const Camera& full_camera, const C
     if (!probe.Project(x, h, best.distance, &p)) continue;
     for (int dv = -o.reach_px - 1; dv <= o.reach_px + 1; ++dv) {
       const int v = p.y + dv;
-      if (v < 0 || v >= edges.rows || edges.at<uchar>(v, p.x) == 0) continue;
+      if (v < 0 || v >= bgr.rows || !probe.EdgeAt(v, p.x)) continue;
       const Vec3<double> ray = RayOfRawPixel(camera, p.x, v);
       const double nr = Dot(n, ray);
       if (nr <= 1e-9) continue;

@@ -19,7 +19,8 @@ namespace corridor {
 // with a reason. InvalidArgument for bad options or an image that is not the camera's size.
 // `edges`: the image's edges when another search has them (ComputeImageEdges of `bgr`, or its top
 // rows), used when the image is searched at its own resolution; else computed here, the halving
-// reusing their blurred rows.
+// reusing their blurred rows, for the rows the search looks at only (for an undistorted camera:
+// those below the horizon, and above it as far up as the corners of the candidates it examines).
 Status DetectEndWall(const cv::Mat& bgr, const Camera& camera, const CorridorGeometry& geometry,
                      const EndWallDetectorOptions& options, EndWallEstimate* estimate,
                      const ImageEdges* edges = nullptr);

@@ -54,6 +54,20 @@ TEST_P(EndWallOnGeneratedCorridor, IsFoundWithin3Percent) {
     EXPECT_EQ(again.distance, estimate.distance);
     EXPECT_EQ(again.points, estimate.points);
   }
+  // At the image's own resolution: the whole image's edges given, or only the rows the search
+  // looks at computed here (below the horizon, and above it as far as the corners it probes
+  // reach): the same wall, within a few millimetres.
+  EndWallDetectorOptions full_size;
+  full_size.max_work_width = frame.bgr.cols;
+  EndWallEstimate own_rows, whole;
+  ASSERT_TRUE(DetectEndWall(frame.bgr, camera, frame.truth, full_size, &own_rows).ok());
+  ASSERT_TRUE(DetectEndWall(frame.bgr, camera, frame.truth, full_size, &whole, &shared).ok());
+  std::printf("at full size: own rows %d at %.4f m (%d points), whole image %d at %.4f m (%d)\n",
+              own_rows.found, own_rows.distance, own_rows.points, whole.found, whole.distance,
+              whole.points);
+  ASSERT_TRUE(whole.found) << whole.reason;
+  ASSERT_TRUE(own_rows.found) << own_rows.reason;
+  EXPECT_NEAR(own_rows.distance, whole.distance, 0.002 * whole.distance);
 }
 
 INSTANTIATE_TEST_SUITE_P(
