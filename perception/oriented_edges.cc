@@ -169,6 +169,15 @@ namespace {
 // The image's rows [0, to) into *out; false (and *out empty) as ColorCannyEdges.
 bool EdgesFromTop(const cv::Mat& bgr, int to, ImageEdges* out) {
   *out = ImageEdges();
+  if (!bgr.empty() && to > 0 && to < bgr.rows) {
+    // Room for every row of the image: an extension down (ExtendEdgesDown) writes in place.
+    out->smooth.create(bgr.rows, bgr.cols, bgr.type());
+    out->dx.create(bgr.rows, bgr.cols, CV_16S);
+    out->dy.create(bgr.rows, bgr.cols, CV_16S);
+    out->smooth = out->smooth.rowRange(0, to);
+    out->dx = out->dx.rowRange(0, to);
+    out->dy = out->dy.rowRange(0, to);
+  }
   if (bgr.empty() || !ColorCannyEdges(bgr, 0, to, &out->dx, &out->dy, &out->edges, &out->smooth)) {
     *out = ImageEdges();
     return false;
@@ -177,13 +186,27 @@ bool EdgesFromTop(const cv::Mat& bgr, int to, ImageEdges* out) {
   return true;
 }
 
+// Makes *m, rows at the top of a larger matrix, `extra` rows longer; false when the matrix it is
+// part of has no such rows.
+bool GrowDown(int extra, cv::Mat* m) {
+  cv::Size whole;
+  cv::Point offset;
+  m->locateROI(whole, offset);
+  if (offset.x != 0 || whole.width != m->cols || offset.y + m->rows + extra > whole.height) {
+    return false;
+  }
+  m->adjustROI(0, extra, 0, 0);
+  return true;
+}
+
 // Extends *cache, the image's rows [0, from) (EdgesFromTop), to rows [0, to): the same edges as
 // EdgesFromTop(bgr, to, cache), without blurring the rows it has again or taking their gradient
 // again. The blurred rows read the image's rows around them (they are the same at any `to`), and
 // so does each gradient row but the last, whose row below was a reflection: the rows from `from`
-// are blurred and the gradient of those from from - 1 taken; Canny runs over all of them, its
-// hysteresis joining edges across rows. The matrices are new (views of the old stay valid). False
-// (*cache untouched) when the cache is not such rows of this image, or `to` is not below them.
+// are blurred and the gradient of those from from - 1 taken, into the room below the rows had
+// (EdgesFromTop's matrices have it); Canny runs over all of them, its hysteresis joining edges
+// across rows, into a new matrix (views of the old edges stay valid). False (*cache untouched)
+// when the cache is not such rows of this image, or `to` is not below them.
 bool ExtendEdgesDown(const cv::Mat& bgr, int to, ImageEdges* cache) {
   const int from = cache->edges.rows;
   if (from < 2 || to <= from || to > bgr.rows || cache->image_rows != bgr.rows ||
@@ -192,24 +215,25 @@ bool ExtendEdgesDown(const cv::Mat& bgr, int to, ImageEdges* cache) {
       cache->dx.rows != from || cache->dy.rows != from) {
     return false;
   }
-  cv::Mat more;
+  cv::Mat smooth = cache->smooth, dx = cache->dx, dy = cache->dy;
+  if (!GrowDown(to - from, &smooth) || !GrowDown(to - from, &dx) || !GrowDown(to - from, &dy)) {
+    return false;
+  }
+  cv::Mat more = smooth.rowRange(from, to);
+  const uchar* const room = more.data;
   if (!BinomialBlur(bgr, from, to, 5, &more).ok()) return false;
-  ImageEdges out;
-  out.image_rows = bgr.rows;
-  out.smooth.create(to, bgr.cols, bgr.type());
-  cache->smooth.copyTo(out.smooth.rowRange(0, from));
-  more.copyTo(out.smooth.rowRange(from, to));
+  if (more.data != room) more.copyTo(smooth.rowRange(from, to));  // Not in place: copied.
   // The gradient of rows [from - 2, to) taken alone: its first row (a reflection above) dropped.
   cv::Mat gx, gy;
-  ColorGradient(out.smooth.rowRange(from - 2, to), &gx, &gy, nullptr);
-  out.dx.create(to, bgr.cols, CV_16S);
-  out.dy.create(to, bgr.cols, CV_16S);
-  cache->dx.rowRange(0, from - 1).copyTo(out.dx.rowRange(0, from - 1));
-  cache->dy.rowRange(0, from - 1).copyTo(out.dy.rowRange(0, from - 1));
-  gx.rowRange(1, gx.rows).copyTo(out.dx.rowRange(from - 1, to));
-  gy.rowRange(1, gy.rows).copyTo(out.dy.rowRange(from - 1, to));
-  if (!CannyFromGradients(out.dx, out.dy, 20, 60, true, &out.edges).ok()) return false;
-  *cache = std::move(out);
+  ColorGradient(smooth.rowRange(from - 2, to), &gx, &gy, nullptr);
+  gx.rowRange(1, gx.rows).copyTo(dx.rowRange(from - 1, to));
+  gy.rowRange(1, gy.rows).copyTo(dy.rowRange(from - 1, to));
+  cv::Mat edges;
+  if (!CannyFromGradients(dx, dy, 20, 60, true, &edges).ok()) return false;
+  cache->smooth = smooth;
+  cache->dx = dx;
+  cache->dy = dy;
+  cache->edges = edges;
   return true;
 }
 
