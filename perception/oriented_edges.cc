@@ -143,6 +143,10 @@ CORRIDOR_ALWAYS_INLINE inline int Bin(int gx, int gy) {
   return x > 0 ? right : (x < 0 ? left : vertical);
 }
 
+// ColorCannyEdges' Canny thresholds on the colour gradient (and its extension's, which must give
+// the same edges).
+constexpr double kColorCannyLow = 20, kColorCannyHigh = 60;
+
 }  // namespace
 
 int OrientationBin(int gx, int gy) { return Bin(gx, gy); }
@@ -153,7 +157,7 @@ bool ColorCannyEdges(const cv::Mat& bgr, int from, int to, cv::Mat* dx, cv::Mat*
   cv::Mat& blurred = smooth != nullptr ? *smooth : own;
   if (!BinomialBlur(bgr, from, to, 5, &blurred).ok()) return false;
   ColorGradient(blurred, dx, dy, nullptr);
-  return CannyFromGradients(*dx, *dy, 20, 60, true, edges).ok();
+  return CannyFromGradients(*dx, *dy, kColorCannyLow, kColorCannyHigh, true, edges).ok();
 }
 
 bool ImageEdges::Covers(const cv::Mat& image, int bottom) const {
@@ -229,7 +233,7 @@ bool ExtendEdgesDown(const cv::Mat& bgr, int to, ImageEdges* cache) {
   gx.rowRange(1, gx.rows).copyTo(dx.rowRange(from - 1, to));
   gy.rowRange(1, gy.rows).copyTo(dy.rowRange(from - 1, to));
   cv::Mat edges;
-  if (!CannyFromGradients(dx, dy, 20, 60, true, &edges).ok()) return false;
+  if (!CannyFromGradients(dx, dy, kColorCannyLow, kColorCannyHigh, true, &edges).ok()) return false;
   cache->smooth = smooth;
   cache->dx = dx;
   cache->dy = dy;
