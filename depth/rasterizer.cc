@@ -1,9 +1,9 @@
 #include "corridor_depth/rasterizer.h"
 
 #include <cmath>
-#include <limits>
 
 #include "depth/exact_rasterizer.h"
+#include "depth/no_estimate.h"
 #include "depth/paper_rasterizer.h"
 
 namespace corridor {
@@ -71,12 +71,7 @@ Status CreateRasterizer(const std::string& name, const RasterizerOptions& option
 Status DepthRasterizer::RenderNoEstimateNaN(const CorridorGeometry& geometry, const Camera& camera,
                                             cv::Mat* depth) const {
   const Status status = Render(geometry, camera, depth);
-  if (!status.ok()) return status;
-  const float nan = std::numeric_limits<float>::quiet_NaN();
-  for (int v = 0; v < depth->rows; ++v) {
-    float* row = depth->ptr<float>(v);
-    for (int u = 0; u < depth->cols; ++u) row[u] = row[u] > 0 ? row[u] : nan;
-  }
+  if (status.ok()) MarkNoEstimateNaN(depth);
   return status;
 }
 

@@ -14,7 +14,4 @@ Status ToBgr(const cv::Mat& image, const Camera& camera, cv::Mat* bgr);
 // Builds OpenCV's colour-conversion tables once, before frames are recovered concurrently.
 void BuildOpenCvTablesOnce();
 
-// The rasterisers write 0 where they have no estimate; the pipeline's depth says so with NaN.
-void MarkNoEstimateNaN(cv::Mat* depth);
-
 }  // namespace corridor

@@ -1,7 +1,7 @@
 // MarkNoEstimateNaN against a per-pixel rule written out here: positive depths stay, zero,
 // negative and NaN become NaN; on widths that leave a tail after whole vector steps and on a
 // region that is not continuous in memory.
-#include "pipeline/image_input.h"
+#include "depth/no_estimate.h"
 
 #include <cmath>
 #include <limits>
