@@ -96,7 +96,28 @@ void BindRecover(py::module_& m) {
           "far_end", [](const JunctionLine& l) { return Tuple(l.far_end); },
           "(u, v) of the supported end toward the vanishing point.")
       .def_readonly("support_length", &JunctionLine::support_length)
-      .def_readonly("confidence", &JunctionLine::confidence);
+      .def_readonly("confidence", &JunctionLine::confidence)
+      .def_property_readonly(
+          "edge_points",
+          [](const JunctionLine& l) {
+            py::array_t<double> points({static_cast<py::ssize_t>(l.edge_points.size()),
+                                        static_cast<py::ssize_t>(2)});
+            auto out = points.mutable_unchecked<2>();
+            for (size_t i = 0; i < l.edge_points.size(); ++i) {
+              out(i, 0) = l.edge_points[i].x();
+              out(i, 1) = l.edge_points[i].y();
+            }
+            return points;
+          },
+          "N x 2 float64 (u, v), raw pixels: the sub-pixel edge points the solver fitted "
+          "(solver_evidence 'edges'); 0 x 2 when it fitted points on the line.")
+      .def_property_readonly(
+          "edge_weights",
+          [](const JunctionLine& l) {
+            return py::array_t<double>(static_cast<py::ssize_t>(l.edge_weights.size()),
+                                       l.edge_weights.data());
+          },
+          "N float64: one weight per edge point (mean 1).");
 
   py::class_<JunctionPair>(m, "Junctions", "Both junction lines as detected.")
       .def_property_readonly("found", [](const JunctionPair& j) { return j.status.ok(); })

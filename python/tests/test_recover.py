@@ -9,6 +9,7 @@ import numpy as np
 
 import corridor_depth as cd
 from conftest import read_png16, tool
+from corridor_by_hand import rotation
 
 
 def test_depth_equals_the_tools_png_within_a_millimetre(single_frame, tmp_path):
@@ -78,6 +79,40 @@ def test_result_fields(single_frame):
             assert abs(a * u + b * v + c) < 1.0
     assert set(res.times) == {"perception", "solve", "ceiling", "end_wall", "rasterize", "total"}
     assert res.times["total"] > 0
+
+
+def true_junction_line(truth, camera, x_wall):
+    """The image line (a, b, c), a^2 + b^2 = 1, of the generator's junction X_W = x_wall."""
+    r = rotation(truth["yaw"], truth["pitch"])
+    ends = []
+    for s in (2.0, 20.0):
+        p = r @ np.array([x_wall, truth["camera_height"], s])
+        ends.append(np.array([camera.fx * p[0] / p[2] + camera.cx,
+                              camera.fy * p[1] / p[2] + camera.cy, 1.0]))
+    line = np.cross(ends[0], ends[1])
+    return line / np.hypot(line[0], line[1])
+
+
+def test_edge_points_lie_on_the_true_junctions(single_frame):
+    image_path, camera_path, truth = single_frame
+    camera = cd.Camera.from_file(str(camera_path))
+    image = cd.read_image(str(image_path))
+    res = cd.recover_depth(image, camera)
+    assert res.ok
+    half, offset = truth["width"] / 2, truth["offset"]
+    for line, x_wall in ((res.junctions.left, -(half + offset)),
+                         (res.junctions.right, half - offset)):
+        points, weights = line.edge_points, line.edge_weights
+        assert points.dtype == np.float64 and points.ndim == 2 and points.shape[1] == 2
+        assert len(points) >= 30 and weights.shape == (len(points),)
+        assert (weights > 0).all() and abs(weights.mean() - 1.0) < 1e-9
+        true_line = true_junction_line(truth, camera, x_wall)
+        distance = np.abs(points @ true_line[:2] + true_line[2])
+        assert np.median(distance) < 0.5 and np.percentile(distance, 90) < 1.5
+    # Fitting the lines' own points, the solver is given no edge points.
+    lines = cd.recover_depth(image, camera, solver_evidence="lines")
+    assert lines.junctions.left.edge_points.shape == (0, 2)
+    assert lines.junctions.right.edge_weights.shape == (0,)
 
 
 def test_rgb_keyword_and_grey_input(single_frame):
