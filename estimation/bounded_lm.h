@@ -11,7 +11,9 @@
 // Residuals: `int size() const` and `template <typename T> bool operator()(int i, const T* x,
 // T* r) const` (false: residual i cannot be evaluated at x). Optionally `template <typename T>
 // bool Prepare(const T* x) const`, called before residuals at a new x are evaluated, for the work
-// they all share (false: x cannot be evaluated).
+// they all share (false: x cannot be evaluated), and `bool Linearize(const RobustLoss&, const
+// double* x, bounded_lm::Linearization<N>*) const`, the normal equations at x by a way of its
+// own instead of a Jet per residual (false: x cannot be evaluated).
 
 #include <algorithm>
 #include <cmath>
@@ -169,9 +171,10 @@ void NormalToTriangular(const double (*normal)[N + 1], double (*r)[N + 1]) {
   }
 }
 
+// The Linearization at x with every residual's derivatives taken by a Jet.
 template <int N, typename Residuals>
-void Linearize(const Residuals& residuals, const RobustLoss& loss, const double* x,
-               Linearization<N>* lin) {
+void LinearizeWithJets(const Residuals& residuals, const RobustLoss& loss, const double* x,
+                       Linearization<N>* lin) {
   using Jet = ceres::Jet<double, N>;
   *lin = Linearization<N>();
   Jet xj[N];
@@ -201,6 +204,28 @@ void Linearize(const Residuals& residuals, const RobustLoss& loss, const double*
   }
   NormalToTriangular<N>(normal, lin->r);
   lin->ok = std::isfinite(lin->cost);
+}
+
+template <int N, typename Residuals, typename = void>
+struct HasLinearize : std::false_type {};
+template <int N, typename Residuals>
+struct HasLinearize<N, Residuals,
+                    std::void_t<decltype(std::declval<const Residuals&>().Linearize(
+                        std::declval<const RobustLoss&>(), std::declval<const double*>(),
+                        std::declval<Linearization<N>*>()))>> : std::true_type {};
+
+// The Linearization at x: Residuals::Linearize(loss, x, lin) when there is one (a faster way to
+// the same normal equations, with lin->ok its result), else LinearizeWithJets.
+template <int N, typename Residuals>
+void Linearize(const Residuals& residuals, const RobustLoss& loss, const double* x,
+               Linearization<N>* lin) {
+  if constexpr (HasLinearize<N, Residuals>::value) {
+    *lin = Linearization<N>();
+    std::copy(x, x + N, lin->x);
+    lin->ok = residuals.Linearize(loss, x, lin);
+  } else {
+    LinearizeWithJets<N>(residuals, loss, x, lin);
+  }
 }
 
 // Solves min |R y - z|^2 + |diag(d) y|^2 (R, z: the scaled factor and its right-hand side).

@@ -3,67 +3,16 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <type_traits>
 #include <vector>
 
 #include "estimation/bounded_lm.h"
 #include "estimation/capped_weights.h"
 #include "estimation/closed_form.h"
-#include "estimation/junction_line_residual.h"
+#include "estimation/junction_residuals.h"
 #include "estimation/junction_trim.h"
 
 namespace corridor {
 namespace {
-
-// The JunctionLineResidual of every edge point, times the square root of its weight (the
-// maximum-likelihood fit for points of variance 1 / weight): the left junction's points, then the
-// right's. Prepare computes the two sides' lines once per x; each residual is then a point's
-// distance from its side's line.
-class JunctionResiduals {
- public:
-  using Jet = ceres::Jet<double, 4>;
-  JunctionResiduals(const CorridorObservation& observation, const FloorIntrinsics& intrinsics)
-      : observation_(observation), intrinsics_(intrinsics) {}
-
-  int size() const { return static_cast<int>(observation_.left.size() + observation_.right.size()); }
-
-  bool Prepare(const double* x) const { return PrepareInto(x, lines_); }
-  bool Prepare(const Jet* x) const { return PrepareInto(x, jet_lines_); }
-
-  template <typename T>
-  bool operator()(int i, const T* /*x, in the lines Prepare computed*/, T* residual) const {
-    const int left = static_cast<int>(observation_.left.size());
-    const int side = i < left ? -1 : 1;
-    const size_t k = static_cast<size_t>(i < left ? i : i - left);
-    const auto& p = side < 0 ? observation_.left[k] : observation_.right[k];
-    *residual = JunctionLineResidual::Distance(intrinsics_, Lines<T>()[side < 0 ? 0 : 1], p.x(),
-                                               p.y());
-    const std::vector<double>& weights =
-        side < 0 ? observation_.left_weights : observation_.right_weights;
-    if (!weights.empty()) *residual *= std::sqrt(weights[k]);
-    return true;
-  }
-
- private:
-  template <typename T>
-  bool PrepareInto(const T* x, Vec3<T>* out) const {
-    return JunctionLineResidual::ScaledLine(intrinsics_, x, -1, &out[0]) &&
-           JunctionLineResidual::ScaledLine(intrinsics_, x, 1, &out[1]);
-  }
-  template <typename T>
-  const Vec3<T>* Lines() const {
-    if constexpr (std::is_same_v<T, double>) {
-      return lines_;
-    } else {
-      return jet_lines_;
-    }
-  }
-
-  const CorridorObservation& observation_;
-  const FloorIntrinsics intrinsics_;
-  mutable Vec3<double> lines_[2] = {};  // Prepare's, at the x of the residuals that follow.
-  mutable Vec3<Jet> jet_lines_[2] = {};
-};
 
 // The loss for a solve starting at x: of scale options.loss_sigmas robust standard deviations of
 // the points' distances there, both sides pooled (at least kMinSigmaPx, a guard for points without
