@@ -3,62 +3,9 @@
 #include <cmath>
 #include <vector>
 
+#include "estimation/side_moments.h"
+
 namespace corridor {
-namespace {
-
-// One side's moments of its points p = ((u - cx) / fx, (v - cy) / fy, 1): a = sum q^2 p p' (upper
-// triangle) and b = sum q f p, with q the factor of p' dl/dx in a point's Jacobian row and f its
-// corrected residual.
-struct SideMoments {
-  double a[3][3] = {};
-  double b[3] = {};
-};
-
-// Adds one side's residual costs to *cost and its moments to *moments; false when a residual is
-// not finite. `line` is the side's ScaledLine at x.
-bool AccumulateSide(const FloorIntrinsics& intrinsics, const RobustLoss& loss, const double* line,
-                    const std::vector<Eigen::Vector2d>& points,
-                    const std::vector<double>& weights, double* cost, SideMoments* moments) {
-  double a00 = 0, a01 = 0, a02 = 0, a11 = 0, a12 = 0, a22 = 0, b0 = 0, b1 = 0, b2 = 0;
-  for (size_t i = 0; i < points.size(); ++i) {
-    // As JunctionLineResidual::Distance computes it, so the residual is the Jet path's value.
-    const double pu = (points[i].x() - intrinsics.cx) / intrinsics.fx;
-    const double pv = (points[i].y() - intrinsics.cy) / intrinsics.fy;
-    double residual = line[0] * pu + line[1] * pv + line[2];
-    double root_weight = 1.0;
-    if (!weights.empty()) {
-      root_weight = std::sqrt(weights[i]);
-      residual *= root_weight;
-    }
-    if (!std::isfinite(residual)) return false;
-    double term = 0, residual_scale = 1, jacobian_scale = 1;
-    bounded_lm::Correct(loss, residual, &term, &residual_scale, &jacobian_scale);
-    *cost += term;
-    const double q = jacobian_scale * root_weight, qq = q * q;
-    const double qf = q * (residual * residual_scale);
-    a00 += qq * pu * pu;
-    a01 += qq * pu * pv;
-    a02 += qq * pu;
-    a11 += qq * pv * pv;
-    a12 += qq * pv;
-    a22 += qq;
-    b0 += qf * pu;
-    b1 += qf * pv;
-    b2 += qf;
-  }
-  moments->a[0][0] = a00;
-  moments->a[0][1] = moments->a[1][0] = a01;
-  moments->a[0][2] = moments->a[2][0] = a02;
-  moments->a[1][1] = a11;
-  moments->a[1][2] = moments->a[2][1] = a12;
-  moments->a[2][2] = a22;
-  moments->b[0] = b0;
-  moments->b[1] = b1;
-  moments->b[2] = b2;
-  return true;
-}
-
-}  // namespace
 
 bool JunctionResiduals::Linearize(const RobustLoss& loss, const double* x,
                                   bounded_lm::Linearization<4>* lin) const {
@@ -82,9 +29,9 @@ bool JunctionResiduals::Linearize(const RobustLoss& loss, const double* x,
       }
     }
     SideMoments m;
-    if (!AccumulateSide(intrinsics_, loss, value, points,
-                        side == 0 ? observation_.left_weights : observation_.right_weights,
-                        &lin->cost, &m)) {
+    if (!AccumulateSideMoments(
+            intrinsics_, loss, value, points,
+            side == 0 ? observation_.left_weights : observation_.right_weights, &lin->cost, &m)) {
       return false;
     }
     // J'J = dl' a dl and J'f = dl' b over the side's rows.

@@ -28,6 +28,8 @@ class RobustLoss {
   }
 
   Kind kind() const { return kind_; }
+  double scale() const { return a_; }
+  double scale_sq() const { return b_; }  // scale() squared, as Evaluate uses it.
 
   void Evaluate(double s, double rho[3]) const {
     constexpr double kMin = std::numeric_limits<double>::min();

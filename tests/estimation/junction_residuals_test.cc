@@ -1,7 +1,8 @@
 // JunctionResiduals::Linearize, the joint solver's normal equations from per-side moments,
 // against bounded_lm::LinearizeWithJets (a Jet per point) and against central differences of the
 // cost: noisy points of the example corridors, random weights, every loss, and x away from the
-// truth so that some points fall in the losses' robust range.
+// truth so that some points fall in the losses' robust range. The moments are summed in four
+// lanes (AVX2 for no loss and Huber's where the CPU has it): every remainder of points is tried.
 
 #include <algorithm>
 #include <cmath>
@@ -30,11 +31,11 @@ void NormalOf(const Linearization& lin, double normal[4][5]) {
   }
 }
 
-// An example corridor's points moved by Gaussian noise of `noise_px`, with outliers and
-// random weights (none on one side when `left_unweighted`).
-CorridorObservation NoisyObservation(const CorridorGeometry& truth, double noise_px,
+// `count` points a side of an example corridor moved by Gaussian noise of `noise_px`, with
+// outliers and random weights (none on one side when `left_unweighted`).
+CorridorObservation NoisyObservation(const CorridorGeometry& truth, int count, double noise_px,
                                      bool left_unweighted, std::mt19937* rng) {
-  CorridorObservation obs = testing::ExactObservation(truth, 40);
+  CorridorObservation obs = testing::ExactObservation(truth, count);
   std::normal_distribution<double> noise(0.0, noise_px);
   std::uniform_real_distribution<double> weight(0.2, 3.0), unit(0.0, 1.0);
   for (auto* side : {&obs.left, &obs.right}) {
@@ -58,7 +59,9 @@ TEST_P(JunctionResidualsLinearize, MatchesTheJetPathAndNumericGradient) {
   int cases = 0;
   for (const CorridorGeometry& truth : testing::ExampleCorridors(1.2)) {
     for (int trial = 0; trial < 4; ++trial) {
-      const CorridorObservation obs = NoisyObservation(truth, 0.5 + trial, trial == 1, &rng);
+      // 37 to 40 points: the four-lane sums with each remainder.
+      const CorridorObservation obs =
+          NoisyObservation(truth, 37 + trial, 0.5 + trial, trial == 1, &rng);
       const FloorIntrinsics intrinsics{obs.fx, obs.fy, obs.cx, obs.cy, obs.camera_height};
       const JunctionResiduals residuals(obs, intrinsics);
       const RobustLoss loss = RobustLoss::FromName(GetParam(), 0.5 + 0.5 * trial);
