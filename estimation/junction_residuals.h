@@ -24,7 +24,9 @@ class JunctionResiduals {
   JunctionResiduals(const CorridorObservation& observation, const FloorIntrinsics& intrinsics)
       : observation_(observation), intrinsics_(intrinsics) {}
 
-  int size() const { return static_cast<int>(observation_.left.size() + observation_.right.size()); }
+  int size() const {
+    return static_cast<int>(observation_.left.size() + observation_.right.size());
+  }
 
   bool Prepare(const double* x) const { return PrepareInto(x, lines_); }
   bool Prepare(const Jet* x) const { return PrepareInto(x, jet_lines_); }
