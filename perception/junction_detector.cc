@@ -424,7 +424,8 @@ void TakeOtherWallsBandAsReflected(const cv::Mat& color, JunctionLine* const lin
 }
 
 // Stage: on a polished floor, a junction taken at its baseboard's reflection's lower edge moves up
-// to the middle of the band (reflected_band.h), and the vanishing point with it.
+// to the middle of the band, and one taken at the baseboard's top down to it (reflected_band.h),
+// and the vanishing point with them.
 void TakeJunctionsAboveReflections(const cv::Mat& color, JunctionPair* result) {
   const Eigen::Vector2d vp = result->vanishing_point;
   // One floor mirrors both walls' baseboards: both walls must show a reflection, below the
@@ -435,6 +436,12 @@ void TakeJunctionsAboveReflections(const cv::Mat& color, JunctionPair* result) {
   for (int side = 0; side < 2; ++side) {
     reflected[side] = FindReflectedJunction(color, *lines[side], vp, side == 0,
                                             2 * kBaseboardMaxTurnDeg, &turn[side]);
+    // Or taken at the baseboard's top, with the baseboard and its reflection below it.
+    if (!reflected[side] && !JunctionAtReflectedBandsMiddle(color, *lines[side], vp, side == 0,
+                                                            2 * kBaseboardMaxTurnDeg)) {
+      reflected[side] = FindJunctionBelowBandTop(color, *lines[side], vp, side == 0,
+                                                 2 * kBaseboardMaxTurnDeg, &turn[side]);
+    }
   }
   if (!reflected[0] && !reflected[1]) return;
   if (reflected[0] != reflected[1]) TakeOtherWallsBandAsReflected(color, lines, vp, reflected, turn);

@@ -22,6 +22,10 @@ constexpr double kMinGloss = 0.15, kMaxGloss = 0.85, kMinUnlike = 0.05;
 constexpr double kMinUnlikeLevels = 9.0;  // And by at least this, summed over channels.
 // How far about the middle in slope (candidates) the step from baseboard to reflection is sought.
 constexpr double kMaxMiddleOffset = 3.0;
+// The lowest baseboard, relative to the camera's height (5 cm at 1.2 m, 6.4 cm at 1.6 m), that
+// FindJunctionBelowBandTop reads under a line: a thinner band along the wall is a tile joint's
+// strip or the floor darkening toward the wall.
+constexpr double kMinBaseboardRelativeHeight = 0.04;
 
 double L1(const cv::Vec3d& c) { return std::abs(c[0]) + std::abs(c[1]) + std::abs(c[2]); }
 
@@ -183,6 +187,38 @@ bool FindReflectedJunction(const cv::Mat& image, const JunctionLine& junction,
     middle = MiddleInSlope(below, top);
     if (!ReadsAsReflection(profile, top, middle, 0, false, max_gloss_residual)) return false;
   }
+  *turn_deg = middle * kStepDeg;
+  return true;
+}
+
+bool FindJunctionBelowBandTop(const cv::Mat& image, const JunctionLine& top,
+                              const Eigen::Vector2d& vanishing_point, bool left,
+                              double max_turn_deg, double* turn_deg) {
+  if (image.empty() || image.type() != CV_8UC3 || !vanishing_point.allFinite() ||
+      !(max_turn_deg > 1) || max_turn_deg > 30) {
+    return false;
+  }
+  // The profile from the wall above `top` (its colour) down past the farthest reflection's lower
+  // edge, and the floor beyond it.
+  thread_local TurnedProfile profile;
+  const int floor_steps = static_cast<int>(max_turn_deg / kStepDeg);
+  if (!profile.Read(image, top, vanishing_point, left, -8, floor_steps + kFloorSteps)) {
+    return false;
+  }
+  if (!(profile.below < kMaxSlopeDeg * M_PI / 180.0)) return false;
+  // The reflection's lower edge: the largest change toward the floor.
+  double change = 0;
+  const int bottom = profile.LargestChange(2 * kMinBandSteps, floor_steps, &change);
+  if (bottom == 0) return false;
+  // The junction: the middle in slope of the band from `top` (0) to `bottom`.
+  const double step = kStepDeg * M_PI / 180.0;
+  const double below = profile.below;
+  const double junction = std::atan(0.5 * (std::tan(below) + std::tan(below + bottom * step)));
+  const double middle = (junction - below) / step;
+  // The baseboard's height relative to the camera's: a wall line at height z has a slope in
+  // proportion to h - z.
+  if (1.0 - std::tan(below) / std::tan(junction) < kMinBaseboardRelativeHeight) return false;
+  if (!ReadsAsReflection(profile, 0, middle, bottom, true, kMaxGlossResidual)) return false;
   *turn_deg = middle * kStepDeg;
   return true;
 }

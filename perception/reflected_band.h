@@ -30,6 +30,16 @@ bool FindReflectedJunction(const cv::Mat& image, const JunctionLine& junction,
                            const Eigen::Vector2d& vanishing_point, bool left, double max_turn_deg,
                            double* turn_deg, double max_gloss_residual = kMaxGlossResidual);
 
+// The other way round: `top` (raw pixels, through `vanishing_point`) is a baseboard's top taken
+// for the junction, and below it the baseboard and its reflection read as one band down to the
+// reflection's lower edge (the largest colour change toward the floor within `max_turn_deg`).
+// True, with *turn_deg the turn toward the floor (positive, for TurnJunctionToFoot) to the band's
+// middle in slope, the junction, when the band reads as a baseboard above its reflection (as in
+// FindReflectedJunction) at least 4% of the camera's height high.
+bool FindJunctionBelowBandTop(const cv::Mat& image, const JunctionLine& top,
+                              const Eigen::Vector2d& vanishing_point, bool left,
+                              double max_turn_deg, double* turn_deg);
+
 // Whether `junction` already lies at the middle of such a band: the baseboard above it and its
 // reflection below it, down to the reflection's lower edge as far below in slope as the band's top
 // is above. A wall whose junction was found between the two, on the same polished floor.

@@ -3,7 +3,7 @@
 // the band's middle in slope, computed by hand), with a stripe inside the reflection, nearly the
 // baseboard's colour, a baseboard above a true junction on a matte floor, a band whose lower part
 // is no blend of the baseboard and the floor, and bad input. JunctionAtReflectedBandsMiddle on the
-// same bands.
+// same bands; FindJunctionBelowBandTop on them from the baseboard's top.
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -114,6 +114,68 @@ TEST(ReflectedBandTest, AJunctionAlreadyAtTheBandsMiddleIsTold) {
   EXPECT_TRUE(JunctionAtReflectedBandsMiddle(polished, LineAt(kJunction, true), kVp, true, 12.0));
   EXPECT_FALSE(JunctionAtReflectedBandsMiddle(polished, LineAt(kBottom, true), kVp, true, 12.0));
   EXPECT_FALSE(JunctionAtReflectedBandsMiddle(matte, LineAt(kJunction, true), kVp, true, 12.0));
+}
+
+TEST(ReflectedBandTest, FromTheBaseboardsTopTheJunctionIsTheBandsMiddle) {
+  // The polished floor's band seen from its top (the baseboard's top taken for the junction): the
+  // junction lies below it at the band's middle in slope.
+  for (const bool left : {true, false}) {
+    const cv::Mat image = DrawByAngle(left, [&](double angle) {
+      if (angle < kTop) return Blend(kWall, kWall, 0);
+      if (angle < kJunction) return Blend(kBoard, kBoard, 0);
+      if (angle < kBottom) return Blend(kMatte, kBoard, 0.4);
+      return Blend(kMatte, kWall, 0.4);
+    });
+    double turn = 0;
+    ASSERT_TRUE(FindJunctionBelowBandTop(image, LineAt(kTop, left), kVp, left, 12.0, &turn))
+        << left;
+    EXPECT_NEAR(turn, kJunction - kTop, 0.15) << left;
+  }
+}
+
+TEST(ReflectedBandTest, FromAMatteBaseboardsTopNoReflectionIsRead) {
+  // A baseboard from 30 to 38 degrees on a matte floor, and a band whose lower part is no blend of
+  // the baseboard and the floor: from the top, neither reads as a baseboard over its reflection.
+  const cv::Mat matte = DrawByAngle(true, [&](double angle) {
+    if (angle < kTop) return Blend(kWall, kWall, 0);
+    if (angle < kBottom) return Blend(kBoard, kBoard, 0);
+    return Blend(kMatte, kMatte, 0);
+  });
+  const cv::Mat green = DrawByAngle(false, [&](double angle) {
+    if (angle < kTop) return Blend(kWall, kWall, 0);
+    if (angle < kJunction) return Blend(kBoard, kBoard, 0);
+    if (angle < kBottom) return cv::Vec3b(40, 160, 40);
+    return Blend(kMatte, kWall, 0.4);
+  });
+  double turn = 0;
+  EXPECT_FALSE(FindJunctionBelowBandTop(matte, LineAt(kTop, true), kVp, true, 12.0, &turn));
+  EXPECT_FALSE(FindJunctionBelowBandTop(green, LineAt(kTop, false), kVp, false, 12.0, &turn));
+  EXPECT_FALSE(FindJunctionBelowBandTop(cv::Mat(), LineAt(kTop, true), kVp, true, 12.0, &turn));
+}
+
+TEST(ReflectedBandTest, FromATopABandUnder4PercentOfTheCamerasHeightIsNoBaseboard) {
+  // The same 1.8-degree band of baseboard and reflection below a line 30 degrees below the
+  // horizontal is a baseboard 3.6% of the camera's height (1 - tan 30 / tan 30.9, by hand); below
+  // a line 10 degrees below it, 8.5% (1 - tan 10 / tan 10.9).
+  for (const double top : {30.0, 10.0}) {
+    const double bottom = top + 1.8;
+    const double junction =
+        std::atan(0.5 * (std::tan(top * kDeg) + std::tan(bottom * kDeg))) / kDeg;
+    const cv::Mat image = DrawByAngle(true, [&](double angle) {
+      if (angle < top) return Blend(kWall, kWall, 0);
+      if (angle < junction) return Blend(kBoard, kBoard, 0);
+      if (angle < bottom) return Blend(kMatte, kBoard, 0.4);
+      return Blend(kMatte, kWall, 0.4);
+    });
+    double turn = 0;
+    const bool found = FindJunctionBelowBandTop(image, LineAt(top, true), kVp, true, 12.0, &turn);
+    if (top == 30.0) {
+      EXPECT_FALSE(found);
+    } else {
+      ASSERT_TRUE(found);
+      EXPECT_NEAR(turn, junction - top, 0.15);
+    }
+  }
 }
 
 TEST(ReflectedBandTest, ABaseboardAboveATrueJunctionIsLeftAlone) {
