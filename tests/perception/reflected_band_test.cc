@@ -46,21 +46,31 @@ const double kTop = 30, kBottom = 38;
 const double kJunction = std::atan(0.5 * (std::tan(kTop * kDeg) + std::tan(kBottom * kDeg))) / kDeg;
 const cv::Vec3d kWall(200, 205, 215), kBoard(60, 60, 70), kMatte(110, 120, 150);
 
+// Wall down to `top`, the baseboard down to `junction`, its reflection on a floor of colour
+// `floor` and gloss `gloss` down to `bottom`, then the floor mirroring the wall.
+cv::Mat PolishedBand(bool left, double top, double junction, double bottom,
+                     const cv::Vec3d& floor = kMatte, double gloss = 0.4) {
+  return DrawByAngle(left, [&](double angle) {
+    if (angle < top) return Blend(kWall, kWall, 0);
+    if (angle < junction) return Blend(kBoard, kBoard, 0);
+    if (angle < bottom) return Blend(floor, kBoard, gloss);
+    return Blend(floor, kWall, gloss);
+  });
+}
+
 TEST(ReflectedBandTest, APolishedFloorsReflectionPutsTheJunctionAtTheBandsMiddle) {
   for (const bool left : {true, false}) {
-    const double gloss = 0.4;
-    const cv::Mat image = DrawByAngle(left, [&](double angle) {
-      if (angle < kTop) return Blend(kWall, kWall, 0);
-      if (angle < kJunction) return Blend(kBoard, kBoard, 0);
-      // The floor mirrors the baseboard, then the wall, blended with its own colour.
-      if (angle < kBottom) return Blend(kMatte, kBoard, gloss);
-      return Blend(kMatte, kWall, gloss);
-    });
+    // The floor mirrors the baseboard, then the wall, blended with its own colour.
+    const cv::Mat image = PolishedBand(left, kTop, kJunction, kBottom);
     double turn = 0;
     ASSERT_TRUE(
         FindReflectedJunction(image, LineAt(kBottom, left), kVp, left, 12.0, &turn))
         << left;
     EXPECT_NEAR(turn, kJunction - kBottom, 0.15) << left;
+    // Taken at the baseboard's top instead, the junction lies below it at the same middle.
+    ASSERT_TRUE(FindJunctionBelowBandTop(image, LineAt(kTop, left), kVp, left, 12.0, &turn))
+        << left;
+    EXPECT_NEAR(turn, kJunction - kTop, 0.15) << left;
   }
 }
 
@@ -86,12 +96,7 @@ TEST(ReflectedBandTest, AReflectionNearlyTheBaseboardsColourIsFound) {
   // by (1 - gloss) |floor - baseboard| = 0.5 * 56 = 28 levels, 6.5% of the wall-to-baseboard
   // step (430 levels).
   const cv::Vec3d floor(80, 80, 86);
-  const cv::Mat image = DrawByAngle(false, [&](double angle) {
-    if (angle < kTop) return Blend(kWall, kWall, 0);
-    if (angle < kJunction) return Blend(kBoard, kBoard, 0);
-    if (angle < kBottom) return Blend(floor, kBoard, 0.5);
-    return Blend(floor, kWall, 0.5);
-  });
+  const cv::Mat image = PolishedBand(false, kTop, kJunction, kBottom, floor, 0.5);
   double turn = 0;
   ASSERT_TRUE(FindReflectedJunction(image, LineAt(kBottom, false), kVp, false, 12.0, &turn));
   EXPECT_NEAR(turn, kJunction - kBottom, 0.15);
@@ -100,12 +105,7 @@ TEST(ReflectedBandTest, AReflectionNearlyTheBaseboardsColourIsFound) {
 TEST(ReflectedBandTest, AJunctionAlreadyAtTheBandsMiddleIsTold) {
   // The same polished floor, the junction found where the baseboard meets its reflection: the band
   // lies about it. At the reflection's lower edge, or on a matte floor, it does not.
-  const cv::Mat polished = DrawByAngle(true, [&](double angle) {
-    if (angle < kTop) return Blend(kWall, kWall, 0);
-    if (angle < kJunction) return Blend(kBoard, kBoard, 0);
-    if (angle < kBottom) return Blend(kMatte, kBoard, 0.4);
-    return Blend(kMatte, kWall, 0.4);
-  });
+  const cv::Mat polished = PolishedBand(true, kTop, kJunction, kBottom);
   const cv::Mat matte = DrawByAngle(true, [&](double angle) {
     if (angle < kTop) return Blend(kWall, kWall, 0);
     if (angle < kJunction) return Blend(kBoard, kBoard, 0);
@@ -116,43 +116,6 @@ TEST(ReflectedBandTest, AJunctionAlreadyAtTheBandsMiddleIsTold) {
   EXPECT_FALSE(JunctionAtReflectedBandsMiddle(matte, LineAt(kJunction, true), kVp, true, 12.0));
 }
 
-TEST(ReflectedBandTest, FromTheBaseboardsTopTheJunctionIsTheBandsMiddle) {
-  // The polished floor's band seen from its top (the baseboard's top taken for the junction): the
-  // junction lies below it at the band's middle in slope.
-  for (const bool left : {true, false}) {
-    const cv::Mat image = DrawByAngle(left, [&](double angle) {
-      if (angle < kTop) return Blend(kWall, kWall, 0);
-      if (angle < kJunction) return Blend(kBoard, kBoard, 0);
-      if (angle < kBottom) return Blend(kMatte, kBoard, 0.4);
-      return Blend(kMatte, kWall, 0.4);
-    });
-    double turn = 0;
-    ASSERT_TRUE(FindJunctionBelowBandTop(image, LineAt(kTop, left), kVp, left, 12.0, &turn))
-        << left;
-    EXPECT_NEAR(turn, kJunction - kTop, 0.15) << left;
-  }
-}
-
-TEST(ReflectedBandTest, FromAMatteBaseboardsTopNoReflectionIsRead) {
-  // A baseboard from 30 to 38 degrees on a matte floor, and a band whose lower part is no blend of
-  // the baseboard and the floor: from the top, neither reads as a baseboard over its reflection.
-  const cv::Mat matte = DrawByAngle(true, [&](double angle) {
-    if (angle < kTop) return Blend(kWall, kWall, 0);
-    if (angle < kBottom) return Blend(kBoard, kBoard, 0);
-    return Blend(kMatte, kMatte, 0);
-  });
-  const cv::Mat green = DrawByAngle(false, [&](double angle) {
-    if (angle < kTop) return Blend(kWall, kWall, 0);
-    if (angle < kJunction) return Blend(kBoard, kBoard, 0);
-    if (angle < kBottom) return cv::Vec3b(40, 160, 40);
-    return Blend(kMatte, kWall, 0.4);
-  });
-  double turn = 0;
-  EXPECT_FALSE(FindJunctionBelowBandTop(matte, LineAt(kTop, true), kVp, true, 12.0, &turn));
-  EXPECT_FALSE(FindJunctionBelowBandTop(green, LineAt(kTop, false), kVp, false, 12.0, &turn));
-  EXPECT_FALSE(FindJunctionBelowBandTop(cv::Mat(), LineAt(kTop, true), kVp, true, 12.0, &turn));
-}
-
 TEST(ReflectedBandTest, FromATopABandUnder4PercentOfTheCamerasHeightIsNoBaseboard) {
   // The same 1.8-degree band of baseboard and reflection below a line 30 degrees below the
   // horizontal is a baseboard 3.6% of the camera's height (1 - tan 30 / tan 30.9, by hand); below
@@ -161,12 +124,7 @@ TEST(ReflectedBandTest, FromATopABandUnder4PercentOfTheCamerasHeightIsNoBaseboar
     const double bottom = top + 1.8;
     const double junction =
         std::atan(0.5 * (std::tan(top * kDeg) + std::tan(bottom * kDeg))) / kDeg;
-    const cv::Mat image = DrawByAngle(true, [&](double angle) {
-      if (angle < top) return Blend(kWall, kWall, 0);
-      if (angle < junction) return Blend(kBoard, kBoard, 0);
-      if (angle < bottom) return Blend(kMatte, kBoard, 0.4);
-      return Blend(kMatte, kWall, 0.4);
-    });
+    const cv::Mat image = PolishedBand(true, top, junction, bottom);
     double turn = 0;
     const bool found = FindJunctionBelowBandTop(image, LineAt(top, true), kVp, true, 12.0, &turn);
     if (top == 30.0) {
@@ -187,6 +145,8 @@ TEST(ReflectedBandTest, ABaseboardAboveATrueJunctionIsLeftAlone) {
   });
   double turn = 0;
   EXPECT_FALSE(FindReflectedJunction(image, LineAt(kBottom, true), kVp, true, 12.0, &turn));
+  // Nor, from its top, a baseboard over a reflection.
+  EXPECT_FALSE(FindJunctionBelowBandTop(image, LineAt(kTop, true), kVp, true, 12.0, &turn));
 }
 
 TEST(ReflectedBandTest, ALowerPartThatIsNoBlendIsNoReflection) {
@@ -199,6 +159,7 @@ TEST(ReflectedBandTest, ALowerPartThatIsNoBlendIsNoReflection) {
   });
   double turn = 0;
   EXPECT_FALSE(FindReflectedJunction(image, LineAt(kBottom, false), kVp, false, 12.0, &turn));
+  EXPECT_FALSE(FindJunctionBelowBandTop(image, LineAt(kTop, false), kVp, false, 12.0, &turn));
 }
 
 TEST(ReflectedBandTest, RefusesWhatItCannotLookAt) {
@@ -206,6 +167,7 @@ TEST(ReflectedBandTest, RefusesWhatItCannotLookAt) {
   const JunctionLine line = LineAt(kBottom, true);
   double turn = 0;
   EXPECT_FALSE(FindReflectedJunction(cv::Mat(), line, kVp, true, 12.0, &turn));
+  EXPECT_FALSE(FindJunctionBelowBandTop(cv::Mat(), line, kVp, true, 12.0, &turn));
   EXPECT_FALSE(FindReflectedJunction(cv::Mat(480, 640, CV_8UC1), line, kVp, true, 12.0, &turn));
   EXPECT_FALSE(FindReflectedJunction(image, line, Eigen::Vector2d(NAN, 0), true, 12.0, &turn));
   EXPECT_FALSE(FindReflectedJunction(image, line, kVp, true, 0.0, &turn));
