@@ -141,15 +141,19 @@ bool ReadsAsReflection(const TurnedProfile& p, int top, double middle, int botto
   return bottom_change >= L1(mirror - floor);
 }
 
+// An 8-bit BGR image, a finite vanishing point and a turn in (1, 30] degrees: what the profiles
+// can be read from.
+bool CanRead(const cv::Mat& image, const Eigen::Vector2d& vanishing_point, double max_turn_deg) {
+  return !image.empty() && image.type() == CV_8UC3 && vanishing_point.allFinite() &&
+         max_turn_deg > 1 && max_turn_deg <= 30;
+}
+
 // The profile about `junction` from max_turn_deg toward the wall to `floor_steps` toward the floor,
 // and the band's top in it: the largest change toward the wall. False when there is none.
 bool ReadBandTop(const cv::Mat& image, const JunctionLine& junction,
                  const Eigen::Vector2d& vanishing_point, bool left, double max_turn_deg,
                  int floor_steps, TurnedProfile* profile, int* top) {
-  if (image.empty() || image.type() != CV_8UC3 || !vanishing_point.allFinite() ||
-      !(max_turn_deg > 1) || max_turn_deg > 30) {
-    return false;
-  }
+  if (!CanRead(image, vanishing_point, max_turn_deg)) return false;
   const int wall_steps = static_cast<int>(max_turn_deg / kStepDeg);
   if (!profile->Read(image, junction, vanishing_point, left, -wall_steps, floor_steps)) {
     return false;
@@ -194,10 +198,7 @@ bool FindReflectedJunction(const cv::Mat& image, const JunctionLine& junction,
 bool FindJunctionBelowBandTop(const cv::Mat& image, const JunctionLine& top,
                               const Eigen::Vector2d& vanishing_point, bool left,
                               double max_turn_deg, double* turn_deg) {
-  if (image.empty() || image.type() != CV_8UC3 || !vanishing_point.allFinite() ||
-      !(max_turn_deg > 1) || max_turn_deg > 30) {
-    return false;
-  }
+  if (!CanRead(image, vanishing_point, max_turn_deg)) return false;
   // The profile from the wall above `top` (its colour) down past the farthest reflection's lower
   // edge, and the floor beyond it.
   thread_local TurnedProfile profile;
