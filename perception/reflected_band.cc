@@ -91,8 +91,9 @@ class TurnedProfile {
   std::vector<cv::Vec3d> colours_;
 };
 
-// The middle in slope, in candidates from the junction (negative), of the band from candidate
-// `top` down to the junction, which lies `below` radians below the horizontal.
+// The middle in slope, in candidates from the line `below` radians below the horizontal, of the
+// band between that line and candidate `top` (negative: toward the wall, the band's top; positive:
+// toward the floor, its lower edge).
 double MiddleInSlope(double below, int top) {
   const double step = kStepDeg * M_PI / 180.0;
   const double below_top = below + top * step;
@@ -214,11 +215,12 @@ bool FindJunctionBelowBandTop(const cv::Mat& image, const JunctionLine& top,
   // The junction: the middle in slope of the band from `top` (0) to `bottom`.
   const double step = kStepDeg * M_PI / 180.0;
   const double below = profile.below;
-  const double junction = std::atan(0.5 * (std::tan(below) + std::tan(below + bottom * step)));
-  const double middle = (junction - below) / step;
+  const double middle = MiddleInSlope(below, bottom);
   // The baseboard's height relative to the camera's: a wall line at height z has a slope in
   // proportion to h - z.
-  if (1.0 - std::tan(below) / std::tan(junction) < kMinBaseboardRelativeHeight) return false;
+  if (1.0 - std::tan(below) / std::tan(below + middle * step) < kMinBaseboardRelativeHeight) {
+    return false;
+  }
   if (!ReadsAsReflection(profile, 0, middle, bottom, true, kMaxGlossResidual)) return false;
   *turn_deg = middle * kStepDeg;
   return true;
