@@ -77,6 +77,11 @@ bool InnerLineCheckOptions::Check(std::string* why) const {
     reason = "min_target_support must be in [0, 1] (0 = no check)";
   } else if (!(max_baseboard_height >= 0 && std::isfinite(max_baseboard_height))) {
     reason = "max_baseboard_height must be >= 0 (0 = no limit)";
+  } else if (!(far_max_height >= 0 && std::isfinite(far_max_height))) {
+    reason = "far_max_height must be >= 0 m (0 = never)";
+  } else if (!(min_far_ceiling_support > 0 && min_far_ceiling_support <= 1) ||
+             !(min_far_target_support >= 0 && min_far_target_support <= 1)) {
+    reason = "min_far_ceiling_support must be in (0, 1], min_far_target_support in [0, 1]";
   }
   if (reason.empty()) return true;
   if (why != nullptr) *why = reason;
@@ -93,6 +98,16 @@ std::string DescribeInnerLineCheck(const InnerLineCheck& check) {
   if (!check.moved) return "";
   std::ostringstream how;
   const int other = 1 - check.side;
+  if (check.far) {
+    how << (check.side == 0 ? "left" : "right") << " wall moved in " << std::setprecision(3)
+        << check.factor << "x: its junction is a line beyond the wall (a room's seen through "
+        << "glass, or a recess's): where it stood, its ceiling junction would be "
+        << check.side_height[check.side] << " m high, above any ceiling searched; moved in, it "
+        << "meets the other side's (" << check.side_height[other]
+        << " m), and its new junction is on edges over " << std::setprecision(2)
+        << check.target_support << " of its view";
+    return how.str();
+  }
   how << (check.side == 0 ? "left" : "right") << " wall moved "
       << (check.baseboard ? "in " : "out ") << std::setprecision(3) << check.factor
       << "x: its junction is "

@@ -17,6 +17,7 @@ struct InnerLineCheck {
   int side = -1;                       // The wall moved: 0 left, 1 right.
   double factor = 1;                   // Its distance was multiplied by this (> 1 out, < 1 in).
   bool baseboard = false;              // True when the far wall was moved in (a baseboard's top taken for its junction).
+  bool far = false;                    // True when a wall whose ceiling shows only above any ceiling searched was moved in (CheckFarWall).
   double band_contrast[2] = {-1, -1};  // Per side, the band the move would cross, unlike the floor by (BandContrast; -1 = not measured).
   double side_height[2] = {0, 0};      // The wide search's ceiling height per side, m (0 = none).
   double side_support[2] = {0, 0};     // Their supports.

@@ -9,6 +9,7 @@
 #include "perception/lower_edge.h"
 #include "pipeline/ceiling_agreement.h"
 #include "pipeline/ceiling_split.h"
+#include "pipeline/far_wall_check.h"
 #include "pipeline/frame_confidence.h"
 #include "pipeline/inner_line_check.h"
 #include "pipeline/plausibility.h"
@@ -190,9 +191,13 @@ Status MoveInnerWall(const WallCheckInputs& in, const CorridorGeometry* previous
     return Status::Ok();
   }
   CorridorGeometry moved = *geometry;
-  const InnerLineCheck check =
+  InnerLineCheck check =
       CheckInnerLine(in.search.bgr, in.search.camera, options.ceiling, options.inner_line, &moved,
                      in.edges, {result->junctions.has_left_lower, result->junctions.has_right_lower});
+  if (!check.moved) {
+    check = CheckFarWall(in.search.bgr, in.search.camera, options.ceiling, options.inner_line,
+                         found, &moved, in.edges);
+  }
   if (!check.moved || !CheckPlausibleShape(moved, options).ok()) return Status::Ok();
   CeilingEstimate ceiling;
   const Status status = SearchCeiling(in, &moved, &ceiling);

@@ -44,7 +44,8 @@ bool TakeFootOfSplitWall(const WallCheckInputs& in, CorridorGeometry* geometry,
                          RecoverDepthResult* result);
 
 // ceiling_checks_inner_lines: unless both ceiling junctions agree already, the inner-line check
-// (inner_line_check.h); a moved wall updates *geometry, the ceiling, result->moved_side and the
+// (inner_line_check.h), then, when it moves nothing, the far-wall check (far_wall_check.h); a
+// moved wall updates *geometry, the ceiling, result->moved_side and the
 // note. In a sequence (`previous` not null) the move must bring the width nearer the previous
 // frame's. Fails only when the ceiling search does.
 Status MoveInnerWall(const WallCheckInputs& in, const CorridorGeometry* previous,

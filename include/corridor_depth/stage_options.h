@@ -147,6 +147,9 @@ struct InnerLineCheckOptions {
   double min_baseboard_disagreement = 0.08;  // Least relative difference of the two sides' ceiling heights that moves the far wall in (a baseboard's top is a few per cent of the camera height above the floor).
   double max_baseboard_height = 0.2;         // The far wall moves in only as far as a baseboard's top this high explains (h / (h - b), h the camera height), m; 0 = no limit.
   double min_target_support = 0.02;          // A wall moves only where its new junction follows edges (CorridorLineSupport, best within 8% of the move) on at least this fraction of its view: a junction hidden all along, or a wall's plain face, cannot confirm a move; 0 = no check.
+  double far_max_height = 15.0;              // A side with no ceiling junction up to the ceiling search's max_height, the other's plainly seen: its ceiling is sought up to this height, m; found, its wall is too far (a line through a glass wall or a recess's floor taken for its junction) and moves in; 0 = never.
+  double min_far_ceiling_support = 0.6;      // ... when both ceiling junctions, the other side's and the far side's moved in, are plainly seen: on edges over this fraction of their samples in view.
+  double min_far_target_support = 0.3;       // ... and only where its new junction follows edges (as min_target_support) on at least this fraction of its view.
 
   bool Check(std::string* why) const;
 };

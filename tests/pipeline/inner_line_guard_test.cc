@@ -75,6 +75,23 @@ TEST(InnerLineGuardTest, BadOptionsAreRejected) {
     EXPECT_FALSE(options.Check(&why)) << bad;
     EXPECT_NE(why.find("max_baseboard_height"), std::string::npos) << why;
   }
+  for (const double bad : {-1.0, std::nan("")}) {
+    InnerLineCheckOptions options;
+    options.far_max_height = bad;
+    std::string why;
+    EXPECT_FALSE(options.Check(&why)) << bad;
+    EXPECT_NE(why.find("far_max_height"), std::string::npos) << why;
+  }
+  for (const double bad : {0.0, 1.5, std::nan("")}) {
+    InnerLineCheckOptions options;
+    options.min_far_ceiling_support = bad;
+    std::string why;
+    EXPECT_FALSE(options.Check(&why)) << bad;
+    EXPECT_NE(why.find("min_far_ceiling_support"), std::string::npos) << why;
+  }
+  InnerLineCheckOptions far_off;
+  far_off.far_max_height = 0;
+  EXPECT_TRUE(far_off.Check(nullptr));
 }
 
 }  // namespace
