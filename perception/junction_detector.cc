@@ -433,17 +433,26 @@ void TakeJunctionsAboveReflections(const cv::Mat& color, JunctionPair* result) {
   JunctionLine* lines[2] = {&result->left, &result->right};  // Left, right.
   double turn[2] = {0, 0};
   bool reflected[2] = {false, false};
+  bool at_middle[2] = {false, false};  // Already at a band's middle.
   for (int side = 0; side < 2; ++side) {
     reflected[side] = FindReflectedJunction(color, *lines[side], vp, side == 0,
                                             2 * kBaseboardMaxTurnDeg, &turn[side]);
+    if (reflected[side]) continue;
+    at_middle[side] = JunctionAtReflectedBandsMiddle(color, *lines[side], vp, side == 0,
+                                                     2 * kBaseboardMaxTurnDeg);
     // Or taken at the baseboard's top, with the baseboard and its reflection below it.
-    if (!reflected[side] && !JunctionAtReflectedBandsMiddle(color, *lines[side], vp, side == 0,
-                                                            2 * kBaseboardMaxTurnDeg)) {
+    if (!at_middle[side]) {
       reflected[side] = FindJunctionBelowBandTop(color, *lines[side], vp, side == 0,
                                                  2 * kBaseboardMaxTurnDeg, &turn[side]);
     }
   }
-  if (!reflected[0] && !reflected[1]) return;
+  if (!reflected[0] && !reflected[1]) {
+    // Both already at their bands' middles: nothing to move.
+    for (int side = 0; side < 2; ++side) {
+      result->at_reflected_band[side] = at_middle[0] && at_middle[1];
+    }
+    return;
+  }
   if (reflected[0] != reflected[1]) TakeOtherWallsBandAsReflected(color, lines, vp, reflected, turn);
   for (int side = 0; side < 2; ++side) {
     if (!reflected[side] && !JunctionAtReflectedBandsMiddle(color, *lines[side], vp, side == 0,
@@ -452,6 +461,7 @@ void TakeJunctionsAboveReflections(const cv::Mat& color, JunctionPair* result) {
     }
   }
   for (int side = 0; side < 2; ++side) {
+    result->at_reflected_band[side] = true;
     if (!reflected[side]) continue;
     JunctionLine& line = *lines[side];
     TurnJunctionToFoot(LineThrough(line.near_end, line.far_end), turn[side], vp, side == 0, &line);

@@ -123,7 +123,8 @@ std::string DescribeInnerLineCheck(const InnerLineCheck& check) {
 InnerLineCheck CheckInnerLine(const cv::Mat& bgr, const Camera& camera,
                               const CeilingDetectorOptions& ceiling,
                               const InnerLineCheckOptions& options, CorridorGeometry* geometry,
-                              ImageEdges* edges, std::array<bool, 2> has_lower) {
+                              ImageEdges* edges, std::array<bool, 2> has_lower,
+                              std::array<bool, 2> at_reflected_band) {
   InnerLineCheck check;
   const double h = geometry->camera_height;
   CeilingDetectorOptions wide = ceiling;
@@ -207,6 +208,9 @@ InnerLineCheck CheckInnerLine(const cv::Mat& bgr, const Camera& camera,
   // A box's edge or a floor line taken for the junction follows edges over part of the way; a line
   // on edges nearly all along, as a junction is, stays (the other wall is then the wrong one: put
   // too far, which this check cannot tell from this one put too near).
+  // A junction at a baseboard-and-reflection band's middle has a faint edge of its own, and the
+  // baseboard's top just above it, where a move out would put it.
+  if (at_reflected_band[inner]) return check;
   const double wall_x = inner == 0 ? -geometry->LeftDistance() : geometry->RightDistance();
   check.line_support =
       CorridorLineSupport(bgr, camera, *geometry, wall_x, h, ceiling, edges);

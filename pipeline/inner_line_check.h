@@ -25,14 +25,6 @@ struct InnerLineCheck {
   double target_support = -1;          // The junction where the move puts it: its best support within 8% of the move (-1 when not measured).
 };
 
-// Runs the check on the search image (`bgr` with `camera`, as the ceiling search sees them);
-// `ceiling` are the ceiling search's options (its min_height..max_height bound the ceiling the
-// trusted side may give). Updates *geometry (width and offset) when a wall moves. `edges`: the
-// frame's edges of the search image (see DetectCeiling), or null. `has_lower` (left, right): the
-// sides whose junction has a lower parallel line beside it (JunctionPair::has_left_lower): a
-// baseboard's top may have been taken for it, its wall then too far and its ceiling too high.
-// Where the trusted side reaches min_support only on its samples in view
-// (InnerLineCheckOptions::strong_support), such a side is not trusted.
 // The least disagreement (relative) of the two ceiling sides at which CheckInnerLine may move a
 // wall.
 double MinInnerLineDisagreement(const InnerLineCheckOptions& options);
@@ -41,10 +33,21 @@ double MinInnerLineDisagreement(const InnerLineCheckOptions& options);
 // moved.
 std::string DescribeInnerLineCheck(const InnerLineCheck& check);
 
+// Runs the check on the search image (`bgr` with `camera`, as the ceiling search sees them);
+// `ceiling` are the ceiling search's options (its min_height..max_height bound the ceiling the
+// trusted side may give). Updates *geometry (width and offset) when a wall moves. `edges`: the
+// frame's edges of the search image (see DetectCeiling), or null. `has_lower` (left, right): the
+// sides whose junction has a lower parallel line beside it (JunctionPair::has_left_lower): a
+// baseboard's top may have been taken for it, its wall then too far and its ceiling too high.
+// Where the trusted side reaches min_support only on its samples in view
+// (InnerLineCheckOptions::strong_support), such a side is not trusted. `at_reflected_band`
+// (left, right): the sides whose junction stands at a baseboard-and-reflection band's middle
+// (JunctionPair::at_reflected_band): not moved out, onto the baseboard's top.
 InnerLineCheck CheckInnerLine(const cv::Mat& bgr, const Camera& camera,
                               const CeilingDetectorOptions& ceiling,
                               const InnerLineCheckOptions& options, CorridorGeometry* geometry,
                               ImageEdges* edges = nullptr,
-                              std::array<bool, 2> has_lower = {false, false});
+                              std::array<bool, 2> has_lower = {false, false},
+                              std::array<bool, 2> at_reflected_band = {false, false});
 
 }  // namespace corridor

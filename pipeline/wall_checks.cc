@@ -193,7 +193,8 @@ Status MoveInnerWall(const WallCheckInputs& in, const CorridorGeometry* previous
   CorridorGeometry moved = *geometry;
   InnerLineCheck check =
       CheckInnerLine(in.search.bgr, in.search.camera, options.ceiling, options.inner_line, &moved,
-                     in.edges, {result->junctions.has_left_lower, result->junctions.has_right_lower});
+                     in.edges, {result->junctions.has_left_lower, result->junctions.has_right_lower},
+                     {result->junctions.at_reflected_band[0], result->junctions.at_reflected_band[1]});
   if (!check.moved) {
     check = CheckFarWall(in.search.bgr, in.search.camera, options.ceiling, options.inner_line,
                          found, &moved, in.edges);

@@ -35,6 +35,9 @@ struct JunctionPair {
   // boundary: the junction if the chosen line is a baseboard's top after all (another cue, the
   // ceiling, decides; see RecoverDepthOptions::ceiling_checks_baseboards).
   bool has_left_lower = false, has_right_lower = false;
+  // Per side (left, right): the junction stands at the middle of a baseboard-and-reflection band
+  // (a polished floor): its own edge is faint, and the band's top above it is the baseboard's.
+  bool at_reflected_band[2] = {false, false};
   JunctionLine left_lower, right_lower;
 
   // When only one side has candidates (the other junction hidden or out of view): its best line,

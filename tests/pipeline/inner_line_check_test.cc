@@ -50,6 +50,36 @@ TEST(InnerLineCheckTest, AWallPutTooNearIsMovedBackOut) {
   }
 }
 
+// A junction at a baseboard-and-reflection band's middle (JunctionPair::at_reflected_band) is not
+// moved out: its own edge is faint, and the line out there is the baseboard's top. The same walls
+// as above, the flag on the side put too near: nothing moves; on the other side only: it does.
+TEST(InnerLineCheckTest, AJunctionAtAReflectedBandsMiddleIsNotMovedOut) {
+  const Camera camera = synth::PaperCamera(0.66);
+  const synth::Frame frame = PlainFrame(camera);
+  ASSERT_FALSE(frame.bgr.empty());
+  const CorridorGeometry& truth = frame.truth;
+  for (const int side : {0, 1}) {
+    double distance[2] = {truth.LeftDistance(), truth.RightDistance()};
+    distance[side] *= 0.75;
+    CorridorGeometry g = truth;
+    g.SetWallDistances(distance[0], distance[1]);
+    std::array<bool, 2> at_band = {false, false};
+    at_band[side] = true;
+    CorridorGeometry kept = g;
+    EXPECT_FALSE(CheckInnerLine(frame.bgr, camera, CeilingDetectorOptions(),
+                                InnerLineCheckOptions(), &kept, nullptr, {false, false}, at_band)
+                     .moved)
+        << side;
+    EXPECT_EQ(kept.width, g.width);
+    std::array<bool, 2> other = {false, false};
+    other[1 - side] = true;
+    EXPECT_TRUE(CheckInnerLine(frame.bgr, camera, CeilingDetectorOptions(),
+                               InnerLineCheckOptions(), &g, nullptr, {false, false}, other)
+                    .moved)
+        << side;
+  }
+}
+
 // A 16:9 view (the search image of a 1280x720 camera, 80 degrees across): the ceiling junctions
 // of a 3.2 m ceiling show only from a few metres on, so the trusted side's line has fewer than
 // half of its samples in view. Its support is judged on the samples in view, as the ceiling
