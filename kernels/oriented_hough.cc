@@ -188,18 +188,20 @@ class Accumulator {
   }
 
   // Eight angles at a time: the same float products, sum and rounding (the current rounding
-  // mode, to nearest even, as the SSE2 and scalar ones). Returns the first angle not done.
+  // mode, to nearest even, as the SSE2 and scalar ones). The last group's lanes past the window
+  // fill cells_ beyond it (room for kAngles + 8) from the tables' next angles (the window's last
+  // angle lies under 2.5 kAngles into the tables, 3 kAngles long). Returns `count`.
   __attribute__((target("avx2"))) int CellsAvx2(float fu, float fv, int first, int count) {
     const __m256 u8 = _mm256_set1_ps(fu), v8 = _mm256_set1_ps(fv);
     int k = 0;
-    for (; k + 8 <= count; k += 8) {
+    for (; k < count; k += 8) {
       const __m256 rho = _mm256_add_ps(_mm256_mul_ps(u8, _mm256_loadu_ps(cos_ + first + k)),
                                        _mm256_mul_ps(v8, _mm256_loadu_ps(sin_ + first + k)));
       const __m256i row = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(row_ + first + k));
       _mm256_storeu_si256(reinterpret_cast<__m256i*>(cells_ + k),
                           _mm256_add_epi32(_mm256_cvtps_epi32(rho), row));
     }
-    return k;
+    return count;
   }
 #endif
 
