@@ -54,15 +54,20 @@ constexpr double kMaxBendSteps = 3.0;
 // straight edge's pixels lie within it, and a line bent between two edges loses those of both.
 constexpr double kOnLinePx = 1.0;
 
-// How many of `pixels` lie within `distance` of `line` and, along `direction`, in [lo, hi].
-long CountNear(const std::vector<Eigen::Vector2d>& pixels, const Eigen::Vector3d& line,
-               double distance, const Eigen::Vector2d& direction, double lo, double hi) {
-  long n = 0;
+// How many of `pixels` lie within `distance` of each of the three `lines` and, along
+// `direction`, in [lo, hi]: counts[i] for lines[i], in one pass.
+void CountNear(const std::vector<Eigen::Vector2d>& pixels, const Eigen::Vector3d (&lines)[3],
+               double distance, const Eigen::Vector2d& direction, double lo, double hi,
+               long counts[3]) {
+  long n0 = 0, n1 = 0, n2 = 0;
   for (const Eigen::Vector2d& p : pixels) {
     const double t = p.dot(direction);
-    n += !(std::abs(line.dot(p.homogeneous())) > distance) & (t >= lo) & (t <= hi);
+    const bool along = (t >= lo) & (t <= hi);
+    n0 += !(std::abs(lines[0].dot(p.homogeneous())) > distance) & along;
+    n1 += !(std::abs(lines[1].dot(p.homogeneous())) > distance) & along;
+    n2 += !(std::abs(lines[2].dot(p.homogeneous())) > distance) & along;
   }
-  return n;
+  counts[0] = n0, counts[1] = n1, counts[2] = n2;
 }
 
 // The median of |line . p| over `pixels` (not empty); `buffer` is working memory.
@@ -116,11 +121,13 @@ bool UnbendLine(const std::vector<Eigen::Vector2d>& side, double distance, Eigen
   if (step < kMinBendStepPx || step > kMaxBendSteps * distance) return false;
   // Over the support's own extent: which line the pixels there follow, not which edge runs on
   // further (a rail or a baseboard's top beyond a junction's hidden stretch).
-  long most = CountNear(side, *line, kOnLinePx, direction, lo, hi);
+  const Eigen::Vector3d lines[3] = {*line, fits[0], fits[1]};
+  long counts[3];
+  CountNear(side, lines, kOnLinePx, direction, lo, hi, counts);
+  long most = counts[0];
   const Eigen::Vector3d* best = nullptr;
-  for (const Eigen::Vector3d& fit : fits) {
-    const long n = CountNear(side, fit, kOnLinePx, direction, lo, hi);
-    if (n > most) most = n, best = &fit;
+  for (int e = 0; e < 2; ++e) {
+    if (counts[e + 1] > most) most = counts[e + 1], best = &fits[e];
   }
   if (best == nullptr) return false;
   Eigen::Vector3d unbent = *best;
