@@ -16,6 +16,8 @@
 namespace corridor {
 namespace {
 
+using testing_util::WithWallScaled;
+
 // A plain corridor with its ceiling junctions in view.
 synth::Frame SplitFrame(const Camera& camera) {
   return testing_util::RenderCorridorFrame(camera, 2.4, 2.7, 3,
@@ -28,14 +30,6 @@ double SplitOf(const synth::Frame& frame, const Camera& camera, const CorridorGe
   CeilingEstimate ceiling;
   EXPECT_TRUE(DetectCeiling(frame.bgr, camera, g, CeilingDetectorOptions(), &ceiling).ok());
   return CeilingSplit(frame.bgr, camera, g, ceiling, CeilingDetectorOptions(), options);
-}
-
-CorridorGeometry Scaled(const CorridorGeometry& truth, int side, double factor) {
-  double distance[2] = {truth.LeftDistance(), truth.RightDistance()};
-  distance[side] *= factor;
-  CorridorGeometry g = truth;
-  g.SetWallDistances(distance[0], distance[1]);
-  return g;
 }
 
 TEST(CeilingSplitTest, TheTrueWallsHaveNoSplit) {
@@ -55,7 +49,7 @@ TEST(CeilingSplitTest, AWallTooFarOrTooNearGivesTheSidesRatio) {
   ASSERT_FALSE(frame.bgr.empty());
   for (const int side : {0, 1}) {
     for (const double factor : {1.3, 1 / 1.3}) {
-      const double split = SplitOf(frame, camera, Scaled(frame.truth, side, factor));
+      const double split = SplitOf(frame, camera, WithWallScaled(frame.truth, side, factor));
       EXPECT_NEAR(split, std::log(1.3), 0.05) << side << " " << factor;
     }
   }
@@ -67,7 +61,7 @@ TEST(CeilingSplitTest, ASmallDisagreementIsNoSplit) {
   const Camera camera = synth::PaperCamera(0.66);
   const synth::Frame frame = SplitFrame(camera);
   ASSERT_FALSE(frame.bgr.empty());
-  const CorridorGeometry g = Scaled(frame.truth, 1, 1.1);
+  const CorridorGeometry g = WithWallScaled(frame.truth, 1, 1.1);
   EXPECT_EQ(SplitOf(frame, camera, g), -1);
   CeilingSplitOptions low;
   low.min_disagreement = 0.05;
@@ -82,7 +76,7 @@ TEST(CeilingSplitTest, NoLineWhereAMoveWouldPutTheJunctionIsNoSplit) {
   const Camera camera = synth::PaperCamera(0.66);
   const synth::Frame frame = SplitFrame(camera);
   ASSERT_FALSE(frame.bgr.empty());
-  const CorridorGeometry g = Scaled(Scaled(frame.truth, 0, 1.5), 1, 0.85);
+  const CorridorGeometry g = WithWallScaled(WithWallScaled(frame.truth, 0, 1.5), 1, 0.85);
   EXPECT_EQ(SplitOf(frame, camera, g), -1);
   // The premise: the sides are plainly seen and split; only the line for a move is missing.
   CeilingSplitOptions any_line;

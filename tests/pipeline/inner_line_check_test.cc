@@ -33,10 +33,7 @@ TEST(InnerLineCheckTest, AWallPutTooNearIsMovedBackOut) {
   const CorridorGeometry& truth = frame.truth;
   for (const int side : {0, 1}) {
     for (const double shrink : {0.5, 0.75}) {
-      double distance[2] = {truth.LeftDistance(), truth.RightDistance()};
-      distance[side] *= shrink;
-      CorridorGeometry g = truth;
-      g.SetWallDistances(distance[0], distance[1]);
+      CorridorGeometry g = testing_util::WithWallScaled(truth, side, shrink);
       const InnerLineCheck check =
           CheckInnerLine(frame.bgr, camera, CeilingDetectorOptions(), InnerLineCheckOptions(), &g);
       ASSERT_TRUE(check.moved) << side << " " << shrink;
@@ -59,10 +56,7 @@ TEST(InnerLineCheckTest, AJunctionAtAReflectedBandsMiddleIsNotMovedOut) {
   ASSERT_FALSE(frame.bgr.empty());
   const CorridorGeometry& truth = frame.truth;
   for (const int side : {0, 1}) {
-    double distance[2] = {truth.LeftDistance(), truth.RightDistance()};
-    distance[side] *= 0.75;
-    CorridorGeometry g = truth;
-    g.SetWallDistances(distance[0], distance[1]);
+    CorridorGeometry g = testing_util::WithWallScaled(truth, side, 0.75);
     std::array<bool, 2> at_band = {false, false};
     at_band[side] = true;
     CorridorGeometry kept = g;
@@ -91,10 +85,7 @@ TEST(InnerLineCheckTest, ANarrowVerticalViewStillMovesTheWall) {
   ASSERT_FALSE(frame.bgr.empty());
   const CorridorGeometry& truth = frame.truth;
   for (const int side : {0, 1}) {
-    double distance[2] = {truth.LeftDistance(), truth.RightDistance()};
-    distance[side] *= 0.5;
-    CorridorGeometry g = truth;
-    g.SetWallDistances(distance[0], distance[1]);
+    CorridorGeometry g = testing_util::WithWallScaled(truth, side, 0.5);
     // A trusted side with a lower parallel line beside it (a baseboard's top may have been
     // taken) is not trusted this weak.
     CorridorGeometry unmoved = g;

@@ -34,6 +34,16 @@ inline synth::Frame RenderCorridorFrame(const Camera& camera, double width, doub
   return frame;
 }
 
+// `truth` with side `side`'s wall distance (0 left, 1 right) multiplied by `factor`: a wall put too
+// near (< 1) or too far (> 1), the other where it is.
+inline CorridorGeometry WithWallScaled(const CorridorGeometry& truth, int side, double factor) {
+  double distance[2] = {truth.LeftDistance(), truth.RightDistance()};
+  distance[side] *= factor;
+  CorridorGeometry g = truth;
+  g.SetWallDistances(distance[0], distance[1]);
+  return g;
+}
+
 // The paper preset's scene `name` (a test failure, and an empty preset, when there is none).
 inline synth::ScenePreset PaperScene(const std::string& name) {
   for (const auto& preset : synth::PaperPreset()) {
