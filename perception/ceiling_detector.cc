@@ -412,35 +412,51 @@ Status DetectCeiling(const cv::Mat& bgr, const Camera& camera, const CorridorGeo
   return Status::Ok();
 }
 
-double CorridorLineSupport(const cv::Mat& bgr, const Camera& camera, const CorridorGeometry& g,
-                           double x, double y, const CeilingDetectorOptions& o, ImageEdges* edges) {
-  if (bgr.empty() || !o.Check(nullptr)) return 0;
+std::vector<double> CorridorLinesSupport(const cv::Mat& bgr, const Camera& camera,
+                                         const CorridorGeometry& g, const std::vector<double>& xs,
+                                         double y, const CeilingDetectorOptions& o,
+                                         ImageEdges* edges) {
+  std::vector<double> supports(xs.size(), 0.0);
+  if (bgr.empty() || xs.empty() || !o.Check(nullptr)) return supports;
   const CorridorRotation<double> r(g.pitch, g.yaw);
   const bool distorted = camera.HasDistortion();
   std::vector<double> depths;
   SampleDepths(o, &depths);
-  std::vector<cv::Point> line(o.samples, cv::Point(-1, -1));
+  std::vector<cv::Point> lines(xs.size() * o.samples, cv::Point(-1, -1));
   int top = camera.image_height, bottom = -1;
-  for (int i = 0; i < o.samples; ++i) {
-    cv::Point p;
-    if (!ProjectCorridorPoint(camera, distorted, r, x, y, depths[i], 1, &p)) continue;
-    line[i] = p;
-    top = std::min(top, p.y);
-    bottom = std::max(bottom, p.y);
+  for (size_t k = 0; k < xs.size(); ++k) {
+    for (int i = 0; i < o.samples; ++i) {
+      cv::Point p;
+      if (!ProjectCorridorPoint(camera, distorted, r, xs[k], y, depths[i], 1, &p)) continue;
+      lines[k * o.samples + i] = p;
+      top = std::min(top, p.y);
+      bottom = std::max(bottom, p.y);
+    }
   }
-  if (bottom < top) return 0;
+  if (bottom < top) return supports;
+  // One band over all the lines' rows: each line's pixels lie inside it with the margins a band
+  // of its own would give them, so each gets the same hits.
   const OrientedEdges band = ComputeOrientedEdges(bgr, top - 2, bottom + 3, edges);
-  return OrientedLineHits(line.data(), o.samples, band).Fraction(CountedSamples(o));
+  for (size_t k = 0; k < xs.size(); ++k) {
+    supports[k] = OrientedLineHits(lines.data() + k * o.samples, o.samples, band)
+                      .Fraction(CountedSamples(o));
+  }
+  return supports;
+}
+
+double CorridorLineSupport(const cv::Mat& bgr, const Camera& camera, const CorridorGeometry& g,
+                           double x, double y, const CeilingDetectorOptions& o, ImageEdges* edges) {
+  return CorridorLinesSupport(bgr, camera, g, {x}, y, o, edges).front();
 }
 
 double BestFloorLineSupportNear(const cv::Mat& bgr, const Camera& camera,
                                 const CorridorGeometry& g, double x, double spread,
                                 const CeilingDetectorOptions& options, ImageEdges* edges) {
-  double best = 0;
-  for (double r = 1 / spread; r <= spread + 1e-9; r += 0.01) {
-    best = std::max(best, CorridorLineSupport(bgr, camera, g, x * r, g.camera_height, options, edges));
-  }
-  return best;
+  std::vector<double> xs;
+  for (double r = 1 / spread; r <= spread + 1e-9; r += 0.01) xs.push_back(x * r);
+  const std::vector<double> supports =
+      CorridorLinesSupport(bgr, camera, g, xs, g.camera_height, options, edges);
+  return supports.empty() ? 0 : *std::max_element(supports.begin(), supports.end());
 }
 
 }  // namespace corridor

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include <opencv2/core.hpp>
 
@@ -32,6 +33,13 @@ Status DetectCeiling(const cv::Mat& bgr, const Camera& camera, const CorridorGeo
 double CorridorLineSupport(const cv::Mat& bgr, const Camera& camera, const CorridorGeometry& g,
                            double x, double y, const CeilingDetectorOptions& options,
                            ImageEdges* edges = nullptr);
+
+// CorridorLineSupport of the lines (x, y, Z) for each x of `xs`, their edges read once over all
+// their rows: the same values, one per x.
+std::vector<double> CorridorLinesSupport(const cv::Mat& bgr, const Camera& camera,
+                                         const CorridorGeometry& g, const std::vector<double>& xs,
+                                         double y, const CeilingDetectorOptions& options,
+                                         ImageEdges* edges = nullptr);
 
 // The best CorridorLineSupport of the floor junctions (x * r, camera height), r from 1 / spread to
 // spread in steps of 0.01: how well a junction near x (give or take its uncertainty, the factor

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "perception/ceiling_detector.h"
 
@@ -31,13 +32,20 @@ InnerLineCheck CheckFarWall(const cv::Mat& bgr, const Camera& camera,
     const double min_ratio =
         std::max(1 + options.min_disagreement, (ceiling.max_height - h) / (height - h));
     const double max_ratio = (options.far_max_height - h) / (height - h);
-    double best = 0, ratio = 0;
+    std::vector<double> ratios, xs;
     for (double r = min_ratio; r <= max_ratio; r *= 1.01) {
-      const double support = CorridorLineSupport(bgr, camera, *geometry, sign * distance[far] / r,
-                                                 h - height, ceiling, edges);
-      if (support > best) best = support, ratio = r;
+      ratios.push_back(r);
+      xs.push_back(sign * distance[far] / r);
     }
-    if (best < options.min_far_ceiling_support || best <= found.side_visible_support[far]) continue;
+    const std::vector<double> supports =
+        CorridorLinesSupport(bgr, camera, *geometry, xs, h - height, ceiling, edges);
+    double best = 0, ratio = 0;
+    for (size_t k = 0; k < supports.size(); ++k) {
+      if (supports[k] > best) best = supports[k], ratio = ratios[k];
+    }
+    if (best < options.min_far_ceiling_support || best <= found.side_visible_support[far]) {
+      continue;
+    }
     const double moved = distance[far] / ratio;
     const double target =
         BestFloorLineSupportNear(bgr, camera, *geometry, sign * moved, 1.08, ceiling, edges);

@@ -12,13 +12,14 @@
 namespace corridor {
 
 // A wall put far too far (a line seen through a glass wall, or a recess's or a side room's floor
-// line, taken for its junction) puts its own ceiling junction higher than any ceiling: the
-// ceiling search (`found`, its sides searched alone up to ceiling.max_height) sees none on that
-// side, while the other side's is plainly seen (strong_support on its samples in view). Sought
-// from max_height up to options.far_max_height, that side's ceiling junction shows; the wall then
-// moves in by the ratio of the two sides' heights above the camera, where its floor junction must
-// follow edges (min_far_target_support). Updates *geometry when it moves; `bgr`, `camera` and
-// `edges` as for CheckInnerLine.
+// line, taken for its junction) puts its own ceiling junction higher than any ceiling, where the
+// ceiling search (`found`, each side searched alone up to ceiling.max_height) does not look.
+// With the other side's ceiling junction plainly seen (min_far_ceiling_support of its samples in
+// view), the far side's is sought at that height for the wall moved in by r, r from where the
+// search's heights end up to options.far_max_height's; plainly seen too, and better than the far
+// side's own in the search, the wall moves in by that r, where its floor junction must follow
+// edges (min_far_target_support). Updates *geometry when it moves; `bgr`, `camera` and `edges`
+// as for CheckInnerLine.
 InnerLineCheck CheckFarWall(const cv::Mat& bgr, const Camera& camera,
                             const CeilingDetectorOptions& ceiling,
                             const InnerLineCheckOptions& options, const CeilingEstimate& found,

@@ -205,12 +205,12 @@ InnerLineCheck CheckInnerLine(const cv::Mat& bgr, const Camera& camera,
       trusted > ceiling.max_height) {
     return check;
   }
-  // A box's edge or a floor line taken for the junction follows edges over part of the way; a line
-  // on edges nearly all along, as a junction is, stays (the other wall is then the wrong one: put
-  // too far, which this check cannot tell from this one put too near).
   // A junction at a baseboard-and-reflection band's middle has a faint edge of its own, and the
   // baseboard's top just above it, where a move out would put it.
   if (at_reflected_band[inner]) return check;
+  // A box's edge or a floor line taken for the junction follows edges over part of the way; a line
+  // on edges nearly all along, as a junction is, stays (the other wall is then the wrong one: put
+  // too far, which this check cannot tell from this one put too near).
   const double wall_x = inner == 0 ? -geometry->LeftDistance() : geometry->RightDistance();
   check.line_support =
       CorridorLineSupport(bgr, camera, *geometry, wall_x, h, ceiling, edges);

@@ -65,6 +65,40 @@ TEST(CeilingDetectorTest, FindsTheCeilingHeightOfGeneratedCorridors) {
   EXPECT_EQ(checked, 6);
 }
 
+// Many corridor lines' supports read on one band of edges over all their rows are each the
+// support of that line read alone (its own band), on the image's edges computed once.
+TEST(CeilingDetectorTest, LinesReadTogetherHaveTheirOwnSupports) {
+  const std::vector<EndWallFrame> frames = PaperEndWallFrames();
+  ASSERT_FALSE(frames.empty());
+  const EndWallFrame& f = frames.front();
+  ASSERT_FALSE(f.frame.bgr.empty());
+  const CorridorGeometry& g = f.frame.truth;
+  ImageEdges shared;
+  ASSERT_TRUE(ComputeImageEdges(f.frame.bgr, &shared));
+  const CeilingDetectorOptions o;
+  const double y_ceiling = g.camera_height - f.preset.scene.ceiling_height;
+  for (const double y : {g.camera_height, y_ceiling}) {
+    std::vector<double> xs;
+    for (int i = 0; i <= 10; ++i) {
+      const double r = 0.5 + 0.05 * i;
+      xs.push_back(-g.LeftDistance() * r);
+      xs.push_back(g.RightDistance() * r);
+    }
+    const std::vector<double> together =
+        CorridorLinesSupport(f.frame.bgr, f.preset.camera, g, xs, y, o, &shared);
+    ASSERT_EQ(together.size(), xs.size());
+    for (size_t k = 0; k < xs.size(); ++k) {
+      EXPECT_EQ(together[k],
+                CorridorLineSupport(f.frame.bgr, f.preset.camera, g, xs[k], y, o, &shared))
+          << y << " " << xs[k];
+    }
+    // Not all empty: a true wall's line (r = 1, the last two) is on edges.
+    EXPECT_GT(std::max(together[xs.size() - 2], together[xs.size() - 1]), 0.5) << y;
+  }
+  EXPECT_TRUE(CorridorLinesSupport(f.frame.bgr, f.preset.camera, g, {}, g.camera_height, o)
+                  .empty());
+}
+
 // The search scores every third height first and then the heights around the best ones: it
 // must find the same best support, per side and for the two sides together, as scoring every
 // height does (each height searched alone, on the same shared edges).
