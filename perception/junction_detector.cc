@@ -396,14 +396,13 @@ constexpr double kMaxOneWallGlossResidual = 0.03;
 // ceiling's lights (one wall alone is weak evidence: a baseboard with a darker foot, or a real
 // glossy floor's uneven reflection, can read so), the other wall's band, of the same height
 // relative to the camera's, ends at its reflection's lower edge too (one floor and one
-// baseboard), and its junction is taken at the band's middle.
+// baseboard), and its junction is taken at the band's middle. `at_middle`: per side, whether its
+// junction already stands at its band's middle (JunctionAtReflectedBandsMiddle).
 void TakeOtherWallsBandAsReflected(const cv::Mat& color, JunctionLine* const lines[2],
-                                   const Eigen::Vector2d& vp, bool reflected[2], double turn[2]) {
+                                   const Eigen::Vector2d& vp, const bool at_middle[2],
+                                   bool reflected[2], double turn[2]) {
   const int seen = reflected[0] ? 0 : 1, other = 1 - seen;
-  if (JunctionAtReflectedBandsMiddle(color, *lines[other], vp, other == 0,
-                                     2 * kBaseboardMaxTurnDeg)) {
-    return;  // Already between its baseboard and its reflection.
-  }
+  if (at_middle[other]) return;  // Already between its baseboard and its reflection.
   // The seen wall's turn is already in turn[seen]; these are asked only whether and how high.
   double seen_height = 0, other_height = 0, unused_turn = 0, other_turn = 0;
   if (!FindReflectedJunction(color, *lines[seen], vp, seen == 0, 2 * kBaseboardMaxTurnDeg,
@@ -433,7 +432,9 @@ void TakeJunctionsAboveReflections(const cv::Mat& color, JunctionPair* result) {
   JunctionLine* lines[2] = {&result->left, &result->right};  // Left, right.
   double turn[2] = {0, 0};
   bool reflected[2] = {false, false};
-  bool at_middle[2] = {false, false};  // Already at a band's middle.
+  // Already at a band's middle: asked once of each side not reflected (the lines do not change
+  // until the end).
+  bool at_middle[2] = {false, false};
   for (int side = 0; side < 2; ++side) {
     reflected[side] = FindReflectedJunction(color, *lines[side], vp, side == 0,
                                             2 * kBaseboardMaxTurnDeg, &turn[side]);
@@ -453,12 +454,11 @@ void TakeJunctionsAboveReflections(const cv::Mat& color, JunctionPair* result) {
     }
     return;
   }
-  if (reflected[0] != reflected[1]) TakeOtherWallsBandAsReflected(color, lines, vp, reflected, turn);
+  if (reflected[0] != reflected[1]) {
+    TakeOtherWallsBandAsReflected(color, lines, vp, at_middle, reflected, turn);
+  }
   for (int side = 0; side < 2; ++side) {
-    if (!reflected[side] && !JunctionAtReflectedBandsMiddle(color, *lines[side], vp, side == 0,
-                                                            2 * kBaseboardMaxTurnDeg)) {
-      return;
-    }
+    if (!reflected[side] && !at_middle[side]) return;
   }
   for (int side = 0; side < 2; ++side) {
     result->at_reflected_band[side] = true;
