@@ -10,7 +10,7 @@ if [[ "${1:-}" == "--eval" ]]; then eval_too=1; shift; fi
 out=${1:-data/real_buildings}
 build=${2:-build}
 here=$(cd "$(dirname "$0")" && pwd)
-classes="rail wainscot furniture floor carpet glass windows pillars head low mix glossy satin"
+classes="rail wainscot furniture floor carpet glass windows pillars head low mix glossy satin baseboard"
 for c in $classes; do
   rm -rf "${out:?}/$c"
   "$build/tools/corridor_synth" --preset=real_buildings --real_class="$c" --output_dir="$out/$c" \

@@ -57,6 +57,10 @@ void SetParts(const std::string& name, Draw* d, SceneOptions* s) {
     s->floor_gloss = d->Uniform(0.3, 0.7);
     s->floor_gloss_reach = d->Uniform(0.03, 0.3);
   }
+  if (name == "baseboard") {
+    s->baseboard_height = d->Uniform(0.04, 0.22);
+    s->baseboard_contrast = d->Uniform(0.0, 0.9);
+  }
 }
 
 Rig PickRig(const std::string& name, Draw* d) {
@@ -118,7 +122,8 @@ ScenePreset MakeScene(const std::string& name, uint32_t seed, const RealBuilding
 const std::vector<std::string>& RealBuildingClasses() {
   static const std::vector<std::string> kClasses = {"rail", "wainscot", "furniture", "floor",
                                                     "carpet", "glass", "windows", "pillars",
-                                                    "head", "low", "mix", "glossy", "satin"};
+                                                    "head", "low", "mix", "glossy", "satin",
+                                                    "baseboard"};
   return kClasses;
 }
 

@@ -48,6 +48,8 @@ namespace synth {
 //   satin      a satin floor: 0.3-0.7 of its colour is the mirrored view at a wall's foot, fading
 //              as exp(-d / reach) along the mirrored ray, reach 0.03-0.3 m: a baseboard's blurred
 //              reflection that fades out into the floor. Not part of mix.
+//   baseboard  baseboards 0.04-0.22 m high (every other class draws 0.1 m), contrast 0-0.9 (0 =
+//              the wall's colour: no line at the baseboard's top). Not part of mix.
 const std::vector<std::string>& RealBuildingClasses();
 
 // The class's base seed (named in docs/results.md): 2900 + 100 x its index in the list above.

@@ -61,7 +61,7 @@ DEFINE_double(floor_gloss_reach, 0.0,
               "0 = a mirror, [0, 5] (single, sequence)");
 DEFINE_string(real_class, "all",
               "real_buildings: all, or one class: rail, wainscot, furniture, floor, carpet, glass, "
-              "windows, pillars, head, low, mix, glossy, satin");
+              "windows, pillars, head, low, mix, glossy, satin, baseboard");
 DEFINE_int32(real_scenes, 10, "real_buildings: scenes per class, [1, 14]");
 DEFINE_int32(real_frames, 20, "real_buildings: frames per scene, [1, 40]");
 

@@ -1,6 +1,7 @@
 // The parts of real buildings against positions and depths computed by hand: each part is where
 // its options put it in the image, solids have the depth of their faces, paint and glass keep the
 // wall's and floor's depth, and a rolled camera's truth is the hand-rotated ray's.
+#include <algorithm>
 #include <cmath>
 #include <set>
 
@@ -144,6 +145,41 @@ TEST(RealBuildingsTest, HandrailShowsAtItsProjectedHeight) {
     ++checked;
   }
   EXPECT_GE(checked, 2);
+}
+
+// A baseboard of the baseboard class's height shows dark up to that height on the wall, where
+// the camera projects it by hand, and the wall's own colour above it.
+TEST(RealBuildingsTest, BaseboardShowsUpToItsHeight) {
+  for (double height : {0.05, 0.2}) {
+    SceneOptions o = Plain(5);
+    o.baseboard_height = height;
+    o.baseboard_contrast = 0.8;
+    const CorridorScene scene = BuildScene(o);
+    Camera camera = TestCamera();  // Fine pixels: a 5 cm baseboard covers several rows.
+    camera.image_width = 480;
+    camera.image_height = 360;
+    camera.fx = camera.fy = 400;
+    camera.cx = 239.5;
+    camera.cy = 179.5;
+    const CameraPose pose{0.0, 0.0, 0.0, 0.66, 2.0};
+    Frame frame;
+    ASSERT_TRUE(RenderFrame(scene, camera, pose, &frame).ok());
+    const double wall_x = -0.5 * o.width;
+    for (double ahead : {3.0, 4.0, 5.0}) {
+      const double z = pose.distance + ahead;
+      const auto brightness = [&](double y) {
+        const cv::Point2d p = Project(camera, pose, wall_x, y, z);
+        const int u = static_cast<int>(std::lround(p.x)), v = static_cast<int>(std::lround(p.y));
+        EXPECT_TRUE(u >= 0 && u < camera.image_width && v >= 0 && v < camera.image_height);
+        const cv::Vec3b bgr = frame.bgr.at<cv::Vec3b>(std::clamp(v, 0, camera.image_height - 1),
+                                                      std::clamp(u, 0, camera.image_width - 1));
+        return bgr[0] + bgr[1] + bgr[2];
+      };
+      const int below = brightness(0.6 * height), above = brightness(height + 0.06);
+      // Contrast 0.8 makes the baseboard 0.36 of the wall's colour.
+      EXPECT_LT(below, 0.5 * above) << "height " << height << " z " << z;
+    }
+  }
 }
 
 // The face of a generated bench (or other furniture) and of a pillar toward the corridor's centre
@@ -447,6 +483,15 @@ TEST(RealBuildingsTest, PresetClassesHaveTheirPartsAndCameras) {
     }
     if (cls != "satin") {
       EXPECT_EQ(s.floor_gloss_reach, 0.0) << preset.name;
+    }
+    if (cls == "baseboard") {
+      EXPECT_GE(s.baseboard_height, 0.04) << preset.name;
+      EXPECT_LE(s.baseboard_height, 0.22) << preset.name;
+      EXPECT_LE(s.baseboard_contrast, 0.9) << preset.name;
+    } else {
+      EXPECT_EQ(s.baseboard_height, SceneOptions().baseboard_height) << preset.name;
+      EXPECT_GE(s.baseboard_contrast, 0.2) << preset.name;
+      EXPECT_LE(s.baseboard_contrast, 0.8) << preset.name;
     }
     for (const CameraPose& pose : preset.poses) {
       EXPECT_EQ(pose.height, preset.camera.mount_height);
