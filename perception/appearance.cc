@@ -267,4 +267,41 @@ double BandContrast(const cv::Mat& bgr, const FloorAppearance& floor, const Merg
   return Median(&distances) / floor.spread;
 }
 
+double BandFade(const cv::Mat& bgr, const MergedLine& upper, const MergedLine& lower, int roi_top,
+                int scale) {
+  const int spacing = std::max(1, scale);
+  const double u0 = std::max(upper.start.x(), lower.start.x());
+  const double u1 = std::min(upper.end.x(), lower.end.x());
+  if (u1 <= u0 || std::abs(lower.line.y()) < 1e-6) return -1.0;
+  const Eigen::Vector2d down = lower.line.head<2>();
+  const int samples = 24;
+  // Per usable sample: a quarter down, three quarters down, the middle, the floor below.
+  thread_local std::vector<cv::Vec3b> quads, lab;
+  thread_local std::vector<float> ratios;
+  quads.clear();
+  for (int i = 0; i < samples; ++i) {
+    const double u = u0 + (u1 - u0) * (i + 0.5) / samples;
+    const Eigen::Vector2d p(u, -(lower.line.x() * u + lower.line.z()) / lower.line.y());
+    const double gap = upper.line.dot(p.homogeneous());
+    if (gap < 4.0 * spacing) continue;
+    cv::Vec3b c[4];
+    if (!Mean3x3(bgr, p - 0.75 * gap * down, roi_top, spacing, &c[0]) ||
+        !Mean3x3(bgr, p - 0.25 * gap * down, roi_top, spacing, &c[1]) ||
+        !Mean3x3(bgr, p - 0.5 * gap * down, roi_top, spacing, &c[2]) ||
+        !Mean3x3(bgr, p + 3.0 * spacing * down, roi_top, spacing, &c[3])) {
+      continue;
+    }
+    for (const cv::Vec3b& colour : c) quads.push_back(colour);
+  }
+  if (quads.size() < 24) return -1.0;
+  BgrToLabInto(quads, &lab);
+  ratios.clear();
+  for (size_t k = 0; k + 3 < lab.size(); k += 4) {
+    const float across = LabDistance(cv::Vec3f(lab[k + 2]), cv::Vec3f(lab[k + 3]));
+    ratios.push_back(LabDistance(cv::Vec3f(lab[k]), cv::Vec3f(lab[k + 1])) /
+                     std::max(across, 1.0f));
+  }
+  return Median(&ratios);
+}
+
 }  // namespace corridor

@@ -69,4 +69,12 @@ double FloorLikenessBelow(const cv::Mat& bgr, const FloorAppearance& floor,
 double BandContrast(const cv::Mat& bgr, const FloorAppearance& floor, const MergedLine& upper,
                     const MergedLine& lower, int roi_top, int scale = 1);
 
+// How much the band between `upper` and `lower` (as for BandContrast) changes from top to foot:
+// the median, over the same samples, of the Lab distance between the band a quarter and three
+// quarters of the way down, over that between its middle and the floor 3 `scale` px below
+// `lower`. Near 0 for a painted baseboard (one colour top to foot); large for a satin floor's
+// reflection, which fades into the floor. -1 when fewer than 6 samples are usable.
+double BandFade(const cv::Mat& bgr, const MergedLine& upper, const MergedLine& lower, int roi_top,
+                int scale = 1);
+
 }  // namespace corridor

@@ -162,5 +162,26 @@ TEST(AppearanceTest, TheBandBetweenTwoLinesIsComparedWithTheFloorBelowIt) {
   EXPECT_EQ(contrast_of(baseboard, 71.5, 59.5), -1.0);
 }
 
+// A band painted one colour has no fade; a band that ramps linearly from the wall's colour at its
+// top to the floor's at its foot (a satin floor's reflection) changes between its quarter and
+// three-quarter rows by as much as its middle differs from the floor: a fade of 1.
+TEST(AppearanceTest, ABandsFadeFromTopToFootAgainstItsStepToTheFloor) {
+  const cv::Scalar wall(200, 200, 200), floor_bgr(40, 90, 150);
+  const auto fade_of = [&](bool ramp) {
+    cv::Mat image(160, 200, CV_8UC3, wall);
+    for (int v = 60; v < 84; ++v) {
+      const double t = ramp ? (v - 60 + 0.5) / 24.0 : 0.3;  // 0 at the top, 1 at the foot.
+      image.row(v).setTo(wall * (1 - t) + floor_bgr * t);
+    }
+    image.rowRange(84, 160).setTo(floor_bgr);
+    const MergedLine upper = LineThrough(Eigen::Vector2d(10, 59.5), Eigen::Vector2d(190, 59.5));
+    const MergedLine lower = LineThrough(Eigen::Vector2d(20, 83.5), Eigen::Vector2d(180, 83.5));
+    return BandFade(image, upper, lower, 0);
+  };
+  EXPECT_NEAR(fade_of(false), 0.0, 1e-6);
+  // Lab is not linear in BGR: the ramp's two halves differ a little in Lab length.
+  EXPECT_NEAR(fade_of(true), 1.0, 0.2);
+}
+
 }  // namespace
 }  // namespace corridor
