@@ -16,6 +16,7 @@
 #include "pipeline/plausibility.h"
 #include "pipeline/sequence_holds.h"
 #include "pipeline/solver_evidence.h"
+#include "pipeline/baseboard_feet.h"
 #include "pipeline/wall_checks.h"
 #include "perception/end_wall_detector.h"
 #include "perception/junction_detector.h"
@@ -363,6 +364,15 @@ Status DepthRecoverer::ReconstructAsSeen(const Camera& camera, RecoverDepthResul
     if (options_.ceiling_checks_baseboards && result->junctions.status.ok()) {
       lower_taken = CheckBaseboards(checks, &geometry, result) ||
                     TakeFootOfSplitWall(checks, &geometry, result);
+      if (!lower_taken) {
+        const BaseboardFeet feet =
+            TakeBothBaseboardFeet(checks, options_.baseboard_feet, &geometry, result);
+        if (feet.taken) {
+          lower_taken = true;
+          status = SearchCeiling(checks, &geometry, &result->ceiling);
+          if (!status.ok()) return finish(status);
+        }
+      }
       result->lower_line_taken = lower_taken;
     }
     // A lower line taken has made the two ceiling sides agree: nothing for the inner-line check.

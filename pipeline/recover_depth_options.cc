@@ -43,6 +43,8 @@ bool RecoverDepthOptions::Check(std::string* why) const {
     reason = "end_wall: " + reason;
   } else if (!inner_line.Check(&reason)) {
     reason = "inner_line: " + reason;
+  } else if (!baseboard_feet.Check(&reason)) {
+    reason = "baseboard_feet: " + reason;
   } else if (!vertical_crossings.Check(&reason)) {
     reason = "vertical_crossings: " + reason;
   } else if (!ceiling_split.Check(&reason)) {

@@ -44,6 +44,10 @@ DEFINE_bool(end_wall, true,
 DEFINE_bool(inner_line_check, true,
             "Where a line inside the floor (grout, a box's edge) was taken for a junction, move that "
             "wall out to where its ceiling junction agrees with the other side's (beyond the paper)");
+DEFINE_double(baseboard_feet_same_ratio, 0.015,
+              "Both junctions on baseboards' tops: when the feet of the bands below them move both "
+              "walls in by one ratio, within this (relative), giving one baseboard height of "
+              "0.03-0.2 m, the feet are the junctions (beyond the paper; 0 = off)");
 DEFINE_int32(search_max_width, 640,
              "Wider images are halved before the ceiling and end-wall searches until they fit, px "
              "(0 = full resolution)");
@@ -128,6 +132,7 @@ Status RecoverDepthOptionsFromFlags(RecoverDepthOptions* options) {
   options->ceiling_height = FLAGS_ceiling_height;
   options->estimate_end_wall = FLAGS_end_wall;
   options->ceiling_checks_inner_lines = FLAGS_inner_line_check;
+  options->baseboard_feet.same_ratio = FLAGS_baseboard_feet_same_ratio;
   options->track_junctions = FLAGS_track_junctions;
   options->tracker.redetect_interval = FLAGS_redetect_interval;
   options->width_prior = FLAGS_width_prior;

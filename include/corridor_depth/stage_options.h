@@ -154,4 +154,24 @@ struct InnerLineCheckOptions {
   bool Check(std::string* why) const;
 };
 
+// Both walls on their baseboards' tops scale the whole box up by h / (h - b) (h the camera's
+// height, b the baseboard's): the two ceiling sides still agree, so no ceiling check sees it. A
+// corridor's baseboards are one height on both walls. Below each junction a band may have a lower
+// edge (FindLowerEdge); when the two feet move both walls in by one ratio r, giving one baseboard
+// height b = h (1 - 1 / r), and each band is unlike the floor beyond its foot, the feet are the
+// junctions. A polished floor's reflection of the baseboard makes the same pair of bands below
+// correct junctions (r = (h + b) / h): there the baseboard's top stands above each junction, at
+// the wall distance d / (2 - r), on edges; above a baseboard's top there is only wall. A satin
+// floor's reflection fades from the junction into the floor; a painted baseboard is one colour.
+struct BaseboardFeetOptions {
+  double same_ratio = 0.015;        // The two walls' ratios agree within this (relative); 0 = off.
+  double min_height = 0.03;         // Least baseboard height the ratio may imply, m.
+  double max_height = 0.2;          // Greatest, m.
+  double min_band_contrast = 1.0;   // Each band at least this unlike the floor beyond its foot (BandContrast, in floor spreads: more than the floor's own spread).
+  double max_band_fade = 0.85;      // Each band's change from a quarter to three quarters of the way down at most this fraction of its middle's step to the floor beyond (BandFade: 0 for one colour, about 1 for a ramp into the floor).
+  double max_mirror_support = 0.5;  // A line above either junction where a reflected baseboard's top would be, on edges over this fraction of its view (CorridorLineSupport): the bands are reflections.
+
+  bool Check(std::string* why) const;
+};
+
 }  // namespace corridor
