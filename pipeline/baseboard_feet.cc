@@ -42,25 +42,33 @@ BaseboardFeet TakeBothBaseboardFeet(const WallCheckInputs& in, const BaseboardFe
   const double before = CeilingDisagreement(result->ceiling, h);
   if (before > std::log(kCeilingSidesAgree)) return feet;  // One wall is wrong, not both alike.
   // Each junction's foot, in the search image; its band unlike the floor beyond it, and of one
-  // colour from top to foot (a satin floor's reflection fades into the floor).
+  // colour from top to foot (a satin floor's reflection fades into the floor). The floor is
+  // sampled only once both feet are found.
   JunctionPair pair = result->junctions;
   const double s = 1.0 / in.search.scale;
-  const FloorAppearance floor = SampleFloor(in.search.bgr, 0);
+  MergedLine chosen[2], foot[2];
+  double turn_deg[2] = {0, 0};
   for (int side = 0; side < 2; ++side) {
-    const bool left = side == 0;
-    JunctionLine& line = left ? pair.left : pair.right;
-    const MergedLine chosen = LineThrough(line.near_end * s, line.far_end * s);
-    MergedLine foot;
-    double turn_deg = 0;
-    if (!FindLowerEdge(in.search.bgr, 0, chosen, pair.vanishing_point * s, left,
-                       kBaseboardMaxTurnDeg, &foot, &turn_deg) ||
-        BandContrast(in.search.bgr, floor, chosen, foot, 0, 1) < options.min_band_contrast ||
-        BandFade(in.search.bgr, chosen, foot, 0, 1) > options.max_band_fade) {
+    const JunctionLine& line = side == 0 ? pair.left : pair.right;
+    chosen[side] = LineThrough(line.near_end * s, line.far_end * s);
+    if (!FindLowerEdge(in.search.bgr, 0, chosen[side], pair.vanishing_point * s, side == 0,
+                       kBaseboardMaxTurnDeg, &foot[side], &turn_deg[side])) {
       return feet;
     }
-    foot.start *= in.search.scale;
-    foot.end *= in.search.scale;
-    TurnJunctionToFoot(foot, turn_deg, pair.vanishing_point, left, &line);
+  }
+  const FloorAppearance floor = SampleFloor(in.search.bgr, 0);
+  for (int side = 0; side < 2; ++side) {
+    if (BandContrast(in.search.bgr, floor, chosen[side], foot[side], 0, 1) <
+            options.min_band_contrast ||
+        BandFade(in.search.bgr, chosen[side], foot[side], 0, 1) > options.max_band_fade) {
+      return feet;
+    }
+  }
+  for (int side = 0; side < 2; ++side) {
+    JunctionLine& line = side == 0 ? pair.left : pair.right;
+    foot[side].start *= in.search.scale;
+    foot[side].end *= in.search.scale;
+    TurnJunctionToFoot(foot[side], turn_deg[side], pair.vanishing_point, side == 0, &line);
     line.edge_points.clear();  // The solvers sample the turned lines.
     line.edge_weights.clear();
   }
