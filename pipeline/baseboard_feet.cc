@@ -20,6 +20,8 @@ bool BaseboardFeetOptions::Check(std::string* why) const {
   std::string reason;
   if (!(same_ratio >= 0 && same_ratio < 1)) {
     reason = "same_ratio must be in [0, 1) (0 = off)";
+  } else if (!(ceiling_ratio >= 0 && ceiling_ratio < 1)) {
+    reason = "ceiling_ratio must be in [0, 1) (0 = off)";
   } else if (!(min_height > 0 && max_height > min_height && std::isfinite(max_height))) {
     reason = "min_height must be > 0 m and max_height above it";
   } else if (!(min_band_contrast >= 0 && std::isfinite(min_band_contrast))) {
@@ -34,6 +36,88 @@ bool BaseboardFeetOptions::Check(std::string* why) const {
   return false;
 }
 
+namespace {
+
+// The pair with the junctions of `sides` (left, right) turned to the feet of the bands below them
+// (FindLowerEdge in the search image), each band unlike the floor beyond it and of one colour top
+// to foot; false when a side has no such foot. The floor is sampled only once the feet are found.
+bool TurnToFeet(const WallCheckInputs& in, const BaseboardFeetOptions& options,
+                const bool sides[2], JunctionPair* pair) {
+  const double s = 1.0 / in.search.scale;
+  MergedLine chosen[2], foot[2];
+  double turn_deg[2] = {0, 0};
+  for (int side = 0; side < 2; ++side) {
+    if (!sides[side]) continue;
+    const JunctionLine& line = side == 0 ? pair->left : pair->right;
+    chosen[side] = LineThrough(line.near_end * s, line.far_end * s);
+    if (!FindLowerEdge(in.search.bgr, 0, chosen[side], pair->vanishing_point * s, side == 0,
+                       kBaseboardMaxTurnDeg, &foot[side], &turn_deg[side])) {
+      return false;
+    }
+  }
+  const FloorAppearance floor = SampleFloor(in.search.bgr, 0);
+  for (int side = 0; side < 2; ++side) {
+    if (sides[side] &&
+        (BandContrast(in.search.bgr, floor, chosen[side], foot[side], 0, 1) <
+             options.min_band_contrast ||
+         BandFade(in.search.bgr, chosen[side], foot[side], 0, 1) > options.max_band_fade)) {
+      return false;
+    }
+  }
+  for (int side = 0; side < 2; ++side) {
+    if (!sides[side]) continue;
+    JunctionLine& line = side == 0 ? pair->left : pair->right;
+    foot[side].start *= in.search.scale;
+    foot[side].end *= in.search.scale;
+    TurnJunctionToFoot(foot[side], turn_deg[side], pair->vanishing_point, side == 0, &line);
+    line.edge_points.clear();  // The solvers sample the turned lines.
+    line.edge_weights.clear();
+  }
+  return true;
+}
+
+// The geometry solved from `pair` into *g and *summary, with each wall's distance in *geometry
+// over its distance in *g into ratio; false when the solve fails.
+bool SolveFeet(const WallCheckInputs& in, const JunctionPair& pair,
+               const CorridorGeometry& geometry, CorridorGeometry* g, SolverSummary* summary,
+               double ratio[2]) {
+  const CorridorObservation observation = ObservationFromJunctions(pair, in.camera, in.options);
+  if (!in.solver.Solve(observation, nullptr, summary).ok()) return false;
+  *g = summary->estimate;
+  g->camera_height = in.camera.mount_height;
+  if (!(g->LeftDistance() > 0) || !(g->RightDistance() > 0)) return false;
+  ratio[0] = geometry.LeftDistance() / g->LeftDistance();
+  ratio[1] = geometry.RightDistance() / g->RightDistance();
+  return CheckPlausibleShape(*g, in.options).ok() &&
+         CheckLineFit(*g, observation, in.camera, in.options).ok();
+}
+
+// Whether a line stands above the junction of `side` where the top of a baseboard mirrored into
+// a band of ratio r would (a reflected foot at d h / (h + b), its top at d h / (h - b) =
+// d / (2 - r)), on edges over max_mirror_support of its view.
+bool ReflectionAbove(const WallCheckInputs& in, const BaseboardFeetOptions& options,
+                     const CorridorGeometry& geometry, int side, double r) {
+  const double d = side == 0 ? geometry.LeftDistance() : geometry.RightDistance();
+  const double x = (side == 0 ? -1 : 1) * d / (2 - r);
+  return BestFloorLineSupportNear(in.search.bgr, in.search.camera, geometry, x, 1.02,
+                                  in.options.ceiling, in.edges) > options.max_mirror_support;
+}
+
+// Takes the feet's pair and geometry into *result and *geometry, with `note`.
+void TakeFeet(const JunctionPair& feet_pair, const SolverSummary& summary, CorridorGeometry g,
+              const std::string& note, CorridorGeometry* geometry, RecoverDepthResult* result) {
+  JunctionPair pair = feet_pair;
+  const Eigen::Vector3d vp = pair.left.line.cross(pair.right.line);
+  if (std::abs(vp.z()) > 1e-12) pair.vanishing_point = vp.head<2>() / vp.z();
+  result->junctions = pair;
+  result->solver_summary = summary;
+  g.ceiling_height = geometry->ceiling_height;
+  *geometry = g;
+  result->AddNote(note);
+}
+
+}  // namespace
+
 BaseboardFeet TakeBothBaseboardFeet(const WallCheckInputs& in, const BaseboardFeetOptions& options,
                                     CorridorGeometry* geometry, RecoverDepthResult* result) {
   BaseboardFeet feet;
@@ -41,78 +125,68 @@ BaseboardFeet TakeBothBaseboardFeet(const WallCheckInputs& in, const BaseboardFe
   const double h = geometry->camera_height;
   const double before = CeilingDisagreement(result->ceiling, h);
   if (before > std::log(kCeilingSidesAgree)) return feet;  // One wall is wrong, not both alike.
-  // Each junction's foot, in the search image; its band unlike the floor beyond it, and of one
-  // colour from top to foot (a satin floor's reflection fades into the floor). The floor is
-  // sampled only once both feet are found.
   JunctionPair pair = result->junctions;
-  const double s = 1.0 / in.search.scale;
-  MergedLine chosen[2], foot[2];
-  double turn_deg[2] = {0, 0};
-  for (int side = 0; side < 2; ++side) {
-    const JunctionLine& line = side == 0 ? pair.left : pair.right;
-    chosen[side] = LineThrough(line.near_end * s, line.far_end * s);
-    if (!FindLowerEdge(in.search.bgr, 0, chosen[side], pair.vanishing_point * s, side == 0,
-                       kBaseboardMaxTurnDeg, &foot[side], &turn_deg[side])) {
-      return feet;
-    }
-  }
-  const FloorAppearance floor = SampleFloor(in.search.bgr, 0);
-  for (int side = 0; side < 2; ++side) {
-    if (BandContrast(in.search.bgr, floor, chosen[side], foot[side], 0, 1) <
-            options.min_band_contrast ||
-        BandFade(in.search.bgr, chosen[side], foot[side], 0, 1) > options.max_band_fade) {
-      return feet;
-    }
-  }
-  for (int side = 0; side < 2; ++side) {
-    JunctionLine& line = side == 0 ? pair.left : pair.right;
-    foot[side].start *= in.search.scale;
-    foot[side].end *= in.search.scale;
-    TurnJunctionToFoot(foot[side], turn_deg[side], pair.vanishing_point, side == 0, &line);
-    line.edge_points.clear();  // The solvers sample the turned lines.
-    line.edge_weights.clear();
-  }
-  const RecoverDepthOptions& ro = in.options;
-  const CorridorObservation observation = ObservationFromJunctions(pair, in.camera, ro);
+  const bool both[2] = {true, true};
+  CorridorGeometry g;
   SolverSummary summary;
-  if (!in.solver.Solve(observation, nullptr, &summary).ok()) return feet;
-  CorridorGeometry g = summary.estimate;
-  g.camera_height = in.camera.mount_height;
-  if (!(g.LeftDistance() > 0) || !(g.RightDistance() > 0)) return feet;
-  const double distance[2] = {geometry->LeftDistance(), geometry->RightDistance()};
-  feet.ratio[0] = distance[0] / g.LeftDistance();
-  feet.ratio[1] = distance[1] / g.RightDistance();
-  if (std::abs(std::log(feet.ratio[0] / feet.ratio[1])) > std::log1p(options.same_ratio)) {
+  if (!TurnToFeet(in, options, both, &pair) ||
+      !SolveFeet(in, pair, *geometry, &g, &summary, feet.ratio) ||
+      std::abs(std::log(feet.ratio[0] / feet.ratio[1])) > std::log1p(options.same_ratio)) {
     return feet;
   }
   const double r = std::sqrt(feet.ratio[0] * feet.ratio[1]);
   const double b = h * (1 - 1 / r);
-  if (b < options.min_height || b > options.max_height || !(r < 2)) return feet;
-  // A reflection: the baseboard's top above the junction, where the mirrored band's foot puts it
-  // (a reflected foot at d h / (h + b), its top at d h / (h - b) = d / (2 - r)).
-  for (int side = 0; side < 2; ++side) {
-    const double x = (side == 0 ? -1 : 1) * distance[side] / (2 - r);
-    if (BestFloorLineSupportNear(in.search.bgr, in.search.camera, *geometry, x, 1.02, ro.ceiling,
-                                 in.edges) > options.max_mirror_support) {
-      return feet;
-    }
-  }
-  if (!CheckPlausibleShape(g, ro).ok() || !CheckLineFit(g, observation, in.camera, ro).ok()) {
+  if (b < options.min_height || b > options.max_height || !(r < 2) ||
+      ReflectionAbove(in, options, *geometry, 0, r) ||
+      ReflectionAbove(in, options, *geometry, 1, r)) {
     return feet;
   }
-  const Eigen::Vector3d vp = pair.left.line.cross(pair.right.line);
-  if (std::abs(vp.z()) > 1e-12) pair.vanishing_point = vp.head<2>() / vp.z();
-  result->junctions = pair;
-  result->solver_summary = summary;
-  g.ceiling_height = geometry->ceiling_height;
-  *geometry = g;
-  feet.taken = true;
   char note[240];
   std::snprintf(note, sizeof(note),
                 "both junctions: the feet of the bands below the lines first taken (baseboards' "
                 "tops), which move both walls in by one ratio (%.3f, %.3f): baseboards %.2f m high",
                 feet.ratio[0], feet.ratio[1], b);
-  result->AddNote(note);
+  TakeFeet(pair, summary, g, note, geometry, result);
+  feet.taken = true;
+  return feet;
+}
+
+BaseboardFeet TakeOneBaseboardFoot(const WallCheckInputs& in, const BaseboardFeetOptions& options,
+                                   CorridorGeometry* geometry, RecoverDepthResult* result) {
+  BaseboardFeet feet;
+  if (!(options.ceiling_ratio > 0) || !result->junctions.status.ok()) return feet;
+  const double h = geometry->camera_height;
+  const CeilingEstimate& ceiling = result->ceiling;
+  if (CeilingDisagreement(ceiling, h, in.options.ceiling.min_support) < 0) return feet;
+  // The wall on its baseboard's top has the higher ceiling side, by h / (h - b).
+  const double above[2] = {ceiling.side_height[0] - h, ceiling.side_height[1] - h};
+  const int far = above[0] > above[1] ? 0 : 1;
+  const double factor = above[far] / above[1 - far];
+  const double b_ceiling = h * (1 - 1 / factor);
+  if (b_ceiling < options.min_height || b_ceiling > options.max_height) return feet;
+  JunctionPair pair = result->junctions;
+  const bool sides[2] = {far == 0, far == 1};
+  CorridorGeometry g;
+  SolverSummary summary;
+  if (!TurnToFeet(in, options, sides, &pair) ||
+      !SolveFeet(in, pair, *geometry, &g, &summary, feet.ratio)) {
+    return feet;
+  }
+  // Two measures of one ratio: the foot's and the ceiling sides'; the other wall stays.
+  const double r = feet.ratio[far];
+  if (std::abs(std::log(r / factor)) > std::log1p(options.ceiling_ratio) ||
+      std::abs(std::log(feet.ratio[1 - far])) > std::log1p(options.same_ratio) || !(r < 2) ||
+      ReflectionAbove(in, options, *geometry, far, r)) {
+    return feet;
+  }
+  char note[240];
+  std::snprintf(note, sizeof(note),
+                "%s junction: the foot of the band below the line first taken (a baseboard's "
+                "top), which moves its wall in by %.3f, as its ceiling side's height over the "
+                "other's (%.3f): a baseboard %.2f m high",
+                far == 0 ? "left" : "right", r, factor, h * (1 - 1 / r));
+  TakeFeet(pair, summary, g, note, geometry, result);
+  feet.taken = true;
   return feet;
 }
 

@@ -18,4 +18,12 @@ struct BaseboardFeet {
 BaseboardFeet TakeBothBaseboardFeet(const WallCheckInputs& in, const BaseboardFeetOptions& options,
                                     CorridorGeometry* geometry, RecoverDepthResult* result);
 
+// One wall on its baseboard's top: its ceiling side higher than the other's by h / (h - b), b
+// within the options' heights (each side found with the ceiling search's minimum support). The
+// foot of the band below its junction, passing the same band and reflection tests, moving it in
+// by that ratio within ceiling_ratio (the other wall staying within same_ratio), is its junction.
+// Taken, as TakeBothBaseboardFeet.
+BaseboardFeet TakeOneBaseboardFoot(const WallCheckInputs& in, const BaseboardFeetOptions& options,
+                                   CorridorGeometry* geometry, RecoverDepthResult* result);
+
 }  // namespace corridor

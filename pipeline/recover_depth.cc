@@ -365,8 +365,11 @@ Status DepthRecoverer::ReconstructAsSeen(const Camera& camera, RecoverDepthResul
       lower_taken = CheckBaseboards(checks, &geometry, result) ||
                     TakeFootOfSplitWall(checks, &geometry, result);
       if (!lower_taken) {
-        const BaseboardFeet feet =
+        BaseboardFeet feet =
             TakeBothBaseboardFeet(checks, options_.baseboard_feet, &geometry, result);
+        if (!feet.taken) {
+          feet = TakeOneBaseboardFoot(checks, options_.baseboard_feet, &geometry, result);
+        }
         if (feet.taken) {
           lower_taken = true;
           status = SearchCeiling(checks, &geometry, &result->ceiling);

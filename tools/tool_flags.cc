@@ -48,6 +48,10 @@ DEFINE_double(baseboard_feet_same_ratio, 0.015,
               "Both junctions on baseboards' tops: when the feet of the bands below them move both "
               "walls in by one ratio, within this (relative), giving one baseboard height of "
               "0.03-0.2 m, the feet are the junctions (beyond the paper; 0 = off)");
+DEFINE_double(baseboard_feet_ceiling_ratio, 0.03,
+              "One junction on a baseboard's top: when the foot of the band below it moves its wall "
+              "in by its ceiling side's height over the other's, within this (relative), the foot "
+              "is the junction (beyond the paper; 0 = off)");
 DEFINE_int32(search_max_width, 640,
              "Wider images are halved before the ceiling and end-wall searches until they fit, px "
              "(0 = full resolution)");
@@ -133,6 +137,7 @@ Status RecoverDepthOptionsFromFlags(RecoverDepthOptions* options) {
   options->estimate_end_wall = FLAGS_end_wall;
   options->ceiling_checks_inner_lines = FLAGS_inner_line_check;
   options->baseboard_feet.same_ratio = FLAGS_baseboard_feet_same_ratio;
+  options->baseboard_feet.ceiling_ratio = FLAGS_baseboard_feet_ceiling_ratio;
   options->track_junctions = FLAGS_track_junctions;
   options->tracker.redetect_interval = FLAGS_redetect_interval;
   options->width_prior = FLAGS_width_prior;

@@ -163,8 +163,11 @@ struct InnerLineCheckOptions {
 // correct junctions (r = (h + b) / h): there the baseboard's top stands above each junction, at
 // the wall distance d / (2 - r), on edges; above a baseboard's top there is only wall. A satin
 // floor's reflection fades from the junction into the floor; a painted baseboard is one colour.
+// One wall on its baseboard's top raises its ceiling side by the same h / (h - b): a foot that
+// moves that wall in by the ratio of the two ceiling sides is its junction.
 struct BaseboardFeetOptions {
-  double same_ratio = 0.015;        // The two walls' ratios agree within this (relative); 0 = off.
+  double same_ratio = 0.015;        // Both walls: their ratios agree within this (relative); 0 = off.
+  double ceiling_ratio = 0.03;      // One wall: its foot's ratio and its ceiling side's over the other's agree within this (relative); 0 = off.
   double min_height = 0.03;         // Least baseboard height the ratio may imply, m.
   double max_height = 0.2;          // Greatest, m.
   double min_band_contrast = 1.0;   // Each band at least this unlike the floor beyond its foot (BandContrast, in floor spreads: more than the floor's own spread).
