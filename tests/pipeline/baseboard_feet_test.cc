@@ -47,22 +47,14 @@ FeetCase Render(double height, double gloss) {
   return c;
 }
 
-// The junction line through the image of the wall line (x, 0, Z) of `g`'s walls, Z from 3 to
-// 15 m, its ends the projections at those depths (TrueJunction's projection by hand).
+// The junction line of `g`'s wall on `side` (< 0: left), its ends the projections at 3 and 15 m
+// ahead (by hand, as TrueJunction's).
 JunctionLine LineOf(const CorridorGeometry& g, const Camera& camera, int side) {
   JunctionLine line;
   line.line = testing_util::TrueJunction(g, camera, side);
-  // The points of the line nearest the projections of depths 3 and 15 m along it.
   const double x = side < 0 ? -(g.width / 2 + g.offset) : g.width / 2 - g.offset;
-  Eigen::Vector2d ends[2];
-  for (int i = 0; i < 2; ++i) {
-    const double z = i == 0 ? 3.0 : 15.0;
-    const double x1 = std::cos(g.yaw) * x + std::sin(g.yaw) * z;
-    const double z1 = -std::sin(g.yaw) * x + std::cos(g.yaw) * z;
-    const double yc = std::cos(g.pitch) * g.camera_height - std::sin(g.pitch) * z1;
-    const double zc = std::sin(g.pitch) * g.camera_height + std::cos(g.pitch) * z1;
-    ends[i] = Eigen::Vector2d(camera.fx * x1 / zc + camera.cx, camera.fy * yc / zc + camera.cy);
-  }
+  const Eigen::Vector2d ends[2] = {testing_util::ProjectFloorPoint(g, camera, x, 3.0),
+                                   testing_util::ProjectFloorPoint(g, camera, x, 15.0)};
   line.near_end = ends[0];
   line.far_end = ends[1];
   line.support_length = (ends[0] - ends[1]).norm();

@@ -53,19 +53,24 @@ inline synth::ScenePreset PaperScene(const std::string& name) {
   return synth::ScenePreset();
 }
 
+// The pixel of the floor point (x, h, z) (x across the corridor from the camera, z ahead)
+// projected by hand: P_C = R_x(pitch) R_y(yaw) P_W.
+inline Eigen::Vector2d ProjectFloorPoint(const CorridorGeometry& g, const Camera& c, double x,
+                                         double z) {
+  const double x1 = std::cos(g.yaw) * x + std::sin(g.yaw) * z;
+  const double z1 = -std::sin(g.yaw) * x + std::cos(g.yaw) * z;
+  const double yc = std::cos(g.pitch) * g.camera_height - std::sin(g.pitch) * z1;
+  const double zc = std::sin(g.pitch) * g.camera_height + std::cos(g.pitch) * z1;
+  return Eigen::Vector2d(c.fx * x1 / zc + c.cx, c.fy * yc / zc + c.cy);
+}
+
 // The image line of the floor/wall junction (X, h, Z), Z in R (side < 0: left), through two
-// points projected by hand
-// (P_C = R_x(pitch) R_y(yaw) P_W), normalised (a^2 + b^2 = 1).
+// points projected by hand (ProjectFloorPoint), normalised (a^2 + b^2 = 1).
 inline Eigen::Vector3d TrueJunction(const CorridorGeometry& g, const Camera& c, int side) {
   const double x = side < 0 ? -(g.width / 2 + g.offset) : g.width / 2 - g.offset;
   Eigen::Vector3d points[2];
   for (int i = 0; i < 2; ++i) {
-    const double z = i == 0 ? 3.0 : 12.0;
-    const double x1 = std::cos(g.yaw) * x + std::sin(g.yaw) * z;
-    const double z1 = -std::sin(g.yaw) * x + std::cos(g.yaw) * z;
-    const double yc = std::cos(g.pitch) * g.camera_height - std::sin(g.pitch) * z1;
-    const double zc = std::sin(g.pitch) * g.camera_height + std::cos(g.pitch) * z1;
-    points[i] = Eigen::Vector3d(c.fx * x1 / zc + c.cx, c.fy * yc / zc + c.cy, 1.0);
+    points[i] = ProjectFloorPoint(g, c, x, i == 0 ? 3.0 : 12.0).homogeneous();
   }
   Eigen::Vector3d line = points[0].cross(points[1]);
   return line / line.head<2>().norm();

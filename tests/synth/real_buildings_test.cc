@@ -39,6 +39,18 @@ SceneOptions Plain(uint32_t seed) {
   return o;
 }
 
+// TestCamera with pixels 3.3 times finer, so that a part a few centimetres tall covers several
+// rows.
+Camera FineCamera() {
+  Camera camera = TestCamera();
+  camera.image_width = 480;
+  camera.image_height = 360;
+  camera.fx = camera.fy = 400;
+  camera.cx = 239.5;
+  camera.cy = 179.5;
+  return camera;
+}
+
 // Pixel (column, row) of a world point for a level, unrolled camera looking down the corridor.
 cv::Point2d Project(const Camera& c, const CameraPose& pose, double x, double y, double z) {
   const double depth = z - pose.distance;
@@ -106,13 +118,7 @@ TEST(RealBuildingsTest, HandrailShowsAtItsProjectedHeight) {
   rail.color = cv::Vec3f(0.05f, 0.05f, 0.05f);  // Dark against the light wall.
   scene.obstacles = {rail};
   const int side = rail.min.x() + rail.max.x() < 0 ? -1 : 1;
-  // Fine pixels, so that a rail a few cm thick covers several rows.
-  Camera camera = TestCamera();
-  camera.image_width = 480;
-  camera.image_height = 360;
-  camera.fx = camera.fy = 400;
-  camera.cx = 239.5;
-  camera.cy = 179.5;
+  const Camera camera = FineCamera();
   const CameraPose pose{0.0, 0.0, 0.0, 0.66, 2.0};
   Frame frame;
   ASSERT_TRUE(RenderFrame(scene, camera, pose, &frame).ok());
@@ -155,12 +161,7 @@ TEST(RealBuildingsTest, BaseboardShowsUpToItsHeight) {
     o.baseboard_height = height;
     o.baseboard_contrast = 0.8;
     const CorridorScene scene = BuildScene(o);
-    Camera camera = TestCamera();  // Fine pixels: a 5 cm baseboard covers several rows.
-    camera.image_width = 480;
-    camera.image_height = 360;
-    camera.fx = camera.fy = 400;
-    camera.cx = 239.5;
-    camera.cy = 179.5;
+    const Camera camera = FineCamera();
     const CameraPose pose{0.0, 0.0, 0.0, 0.66, 2.0};
     Frame frame;
     ASSERT_TRUE(RenderFrame(scene, camera, pose, &frame).ok());
