@@ -1,6 +1,7 @@
 #include "perception/appearance.h"
 
 #include <algorithm>
+#include <initializer_list>
 #include <array>
 #include <cmath>
 #include <vector>
@@ -232,32 +233,49 @@ double FloorLikenessAbove(const cv::Mat& bgr, const FloorAppearance& floor,
   return count > 0 ? sum / static_cast<double>(count) : 0.0;
 }
 
-double BandContrast(const cv::Mat& bgr, const FloorAppearance& floor, const MergedLine& upper,
-                    const MergedLine& lower, int roi_top, int scale) {
+namespace {
+
+// The colours across the band between `upper` and `lower` (BandContrast's lines) at 24 samples
+// along their common extent where the band is at least 4 `scale` px tall: per usable sample, the
+// 3x3 means `fractions` of the band's height above `lower` (at most 7), then the floor 3 `scale`
+// px below it, appended to *colours. False when the lines have no common extent.
+bool BandColours(const cv::Mat& bgr, const MergedLine& upper, const MergedLine& lower, int roi_top,
+                 int scale, std::initializer_list<double> fractions,
+                 std::vector<cv::Vec3b>* colours) {
   const int spacing = std::max(1, scale);  // Patch pixel spacing, px.
   const double u0 = std::max(upper.start.x(), lower.start.x());
   const double u1 = std::min(upper.end.x(), lower.end.x());
-  if (u1 <= u0 || std::abs(lower.line.y()) < 1e-6) return -1.0;
+  if (u1 <= u0 || std::abs(lower.line.y()) < 1e-6) return false;
   const Eigen::Vector2d down = lower.line.head<2>();  // Unit normal toward the floor.
   const int samples = 24;
-  // Per usable sample: the band's middle, then the floor below (the thread's buffers).
-  thread_local std::vector<cv::Vec3b> pairs, lab;
-  thread_local std::vector<float> distances;
-  pairs.clear();
+  cv::Vec3b c[8];
+  const size_t n = std::min<size_t>(fractions.size(), 7);
   for (int i = 0; i < samples; ++i) {
     const double u = u0 + (u1 - u0) * (i + 0.5) / samples;
     // The lower line's point at column u (b > 0: the line is not vertical).
     const Eigen::Vector2d p(u, -(lower.line.x() * u + lower.line.z()) / lower.line.y());
     const double gap = upper.line.dot(p.homogeneous());  // > 0: p lies below `upper`.
     if (gap < 4.0 * spacing) continue;
-    cv::Vec3b middle, below;
-    if (!Mean3x3(bgr, p - 0.5 * gap * down, roi_top, spacing, &middle) ||
-        !Mean3x3(bgr, p + 3.0 * spacing * down, roi_top, spacing, &below)) {
-      continue;
+    size_t m = 0;
+    for (const double f : fractions) {
+      if (m == n || !Mean3x3(bgr, p - f * gap * down, roi_top, spacing, &c[m])) break;
+      ++m;
     }
-    pairs.push_back(middle);
-    pairs.push_back(below);
+    if (m < n || !Mean3x3(bgr, p + 3.0 * spacing * down, roi_top, spacing, &c[n])) continue;
+    colours->insert(colours->end(), c, c + n + 1);
   }
+  return true;
+}
+
+}  // namespace
+
+double BandContrast(const cv::Mat& bgr, const FloorAppearance& floor, const MergedLine& upper,
+                    const MergedLine& lower, int roi_top, int scale) {
+  // Per usable sample: the band's middle, then the floor below (the thread's buffers).
+  thread_local std::vector<cv::Vec3b> pairs, lab;
+  thread_local std::vector<float> distances;
+  pairs.clear();
+  if (!BandColours(bgr, upper, lower, roi_top, scale, {0.5}, &pairs)) return -1.0;
   if (pairs.size() < 12) return -1.0;
   BgrToLabInto(pairs, &lab);
   distances.clear();
@@ -269,30 +287,11 @@ double BandContrast(const cv::Mat& bgr, const FloorAppearance& floor, const Merg
 
 double BandFade(const cv::Mat& bgr, const MergedLine& upper, const MergedLine& lower, int roi_top,
                 int scale) {
-  const int spacing = std::max(1, scale);
-  const double u0 = std::max(upper.start.x(), lower.start.x());
-  const double u1 = std::min(upper.end.x(), lower.end.x());
-  if (u1 <= u0 || std::abs(lower.line.y()) < 1e-6) return -1.0;
-  const Eigen::Vector2d down = lower.line.head<2>();
-  const int samples = 24;
-  // Per usable sample: a quarter down, three quarters down, the middle, the floor below.
+  // Per usable sample: three quarters up, a quarter up, the middle, the floor below.
   thread_local std::vector<cv::Vec3b> quads, lab;
   thread_local std::vector<float> ratios;
   quads.clear();
-  for (int i = 0; i < samples; ++i) {
-    const double u = u0 + (u1 - u0) * (i + 0.5) / samples;
-    const Eigen::Vector2d p(u, -(lower.line.x() * u + lower.line.z()) / lower.line.y());
-    const double gap = upper.line.dot(p.homogeneous());
-    if (gap < 4.0 * spacing) continue;
-    cv::Vec3b c[4];
-    if (!Mean3x3(bgr, p - 0.75 * gap * down, roi_top, spacing, &c[0]) ||
-        !Mean3x3(bgr, p - 0.25 * gap * down, roi_top, spacing, &c[1]) ||
-        !Mean3x3(bgr, p - 0.5 * gap * down, roi_top, spacing, &c[2]) ||
-        !Mean3x3(bgr, p + 3.0 * spacing * down, roi_top, spacing, &c[3])) {
-      continue;
-    }
-    for (const cv::Vec3b& colour : c) quads.push_back(colour);
-  }
+  if (!BandColours(bgr, upper, lower, roi_top, scale, {0.75, 0.25, 0.5}, &quads)) return -1.0;
   if (quads.size() < 24) return -1.0;
   BgrToLabInto(quads, &lab);
   ratios.clear();
