@@ -44,7 +44,7 @@ struct RecoverDepthOptions {
   bool ceiling_checks_baseboards = true;       // Where a baseboard gave two parallel lines and the upper one was taken, take the lower one when it makes both ceiling junctions agree.
   bool ceiling_checks_inner_lines = true;      // Where a line inside the floor (grout, a box's edge) was taken for a junction, move that wall out to where its ceiling junction agrees with the other side's.
   InnerLineCheckOptions inner_line;            // That check's thresholds.
-  BaseboardFeetOptions baseboard_feet;         // Both walls on their baseboards' tops (ceiling_checks_baseboards): the bands' feet, at one baseboard height.
+  BaseboardFeetOptions baseboard_feet;         // Walls on their baseboards' tops (ceiling_checks_baseboards): the bands' feet, at one baseboard height on both walls or at the ceiling sides' ratio on one.
   double width_prior = 0.0;                    // Width for frames where one junction is hidden, m (0 = none; a sequence uses the previous frame's).
   double max_width_change = 0.15;              // In a sequence, a width this much (relative) narrower than the recent frames' (median of the last 5 measured) means one junction is
                                                // wrong (a box edge or grout line taken for it): that width is held from one wall (0 = off), after the ceiling's
