@@ -9,10 +9,7 @@
 
 #include "perception/appearance.h"
 #include "perception/ceiling_detector.h"
-#include "perception/lower_edge.h"
 #include "pipeline/ceiling_agreement.h"
-#include "pipeline/plausibility.h"
-#include "pipeline/solver_evidence.h"
 
 namespace corridor {
 
@@ -43,15 +40,11 @@ namespace {
 // to foot; false when a side has no such foot. The floor is sampled only once the feet are found.
 bool TurnToFeet(const WallCheckInputs& in, const BaseboardFeetOptions& options,
                 const bool sides[2], JunctionPair* pair) {
-  const double s = 1.0 / in.search.scale;
   MergedLine chosen[2], foot[2];
   double turn_deg[2] = {0, 0};
   for (int side = 0; side < 2; ++side) {
-    if (!sides[side]) continue;
-    const JunctionLine& line = side == 0 ? pair->left : pair->right;
-    chosen[side] = LineThrough(line.near_end * s, line.far_end * s);
-    if (!FindLowerEdge(in.search.bgr, 0, chosen[side], pair->vanishing_point * s, side == 0,
-                       kBaseboardMaxTurnDeg, &foot[side], &turn_deg[side])) {
+    if (sides[side] &&
+        !FindColourFoot(in, *pair, side, &chosen[side], &foot[side], &turn_deg[side])) {
       return false;
     }
   }
@@ -65,31 +58,23 @@ bool TurnToFeet(const WallCheckInputs& in, const BaseboardFeetOptions& options,
     }
   }
   for (int side = 0; side < 2; ++side) {
-    if (!sides[side]) continue;
-    JunctionLine& line = side == 0 ? pair->left : pair->right;
-    foot[side].start *= in.search.scale;
-    foot[side].end *= in.search.scale;
-    TurnJunctionToFoot(foot[side], turn_deg[side], pair->vanishing_point, side == 0, &line);
-    line.edge_points.clear();  // The solvers sample the turned lines.
-    line.edge_weights.clear();
+    if (sides[side]) TurnToColourFoot(in, foot[side], turn_deg[side], side, pair);
   }
   return true;
 }
 
-// The geometry solved from `pair` into *g and *summary, with each wall's distance in *geometry
-// over its distance in *g into ratio; false when the solve fails.
+// The geometry solved from `pair` into *g and *summary (SolveWallCheck), with each wall's
+// distance in `geometry` over its distance in *g into ratio; false when the solve fails.
 bool SolveFeet(const WallCheckInputs& in, const JunctionPair& pair,
                const CorridorGeometry& geometry, CorridorGeometry* g, SolverSummary* summary,
                double ratio[2]) {
-  const CorridorObservation observation = ObservationFromJunctions(pair, in.camera, in.options);
-  if (!in.solver.Solve(observation, nullptr, summary).ok()) return false;
-  *g = summary->estimate;
-  g->camera_height = in.camera.mount_height;
-  if (!(g->LeftDistance() > 0) || !(g->RightDistance() > 0)) return false;
+  if (!SolveWallCheck(in, pair, g, summary) || !(g->LeftDistance() > 0) ||
+      !(g->RightDistance() > 0)) {
+    return false;
+  }
   ratio[0] = geometry.LeftDistance() / g->LeftDistance();
   ratio[1] = geometry.RightDistance() / g->RightDistance();
-  return CheckPlausibleShape(*g, in.options).ok() &&
-         CheckLineFit(*g, observation, in.camera, in.options).ok();
+  return true;
 }
 
 // Whether a line stands above the junction of `side` where the top of a baseboard mirrored into

@@ -23,6 +23,37 @@ constexpr double kFootCeilingAgreement = 0.03;
 
 }  // namespace
 
+bool SolveWallCheck(const WallCheckInputs& in, const JunctionPair& pair, CorridorGeometry* g,
+                    SolverSummary* summary) {
+  const CorridorObservation observation = ObservationFromJunctions(pair, in.camera, in.options);
+  if (!in.solver.Solve(observation, nullptr, summary).ok()) return false;
+  *g = summary->estimate;
+  g->camera_height = in.camera.mount_height;
+  return CheckPlausibleShape(*g, in.options).ok() &&
+         CheckLineFit(*g, observation, in.camera, in.options).ok();
+}
+
+bool FindColourFoot(const WallCheckInputs& in, const JunctionPair& pair, int side,
+                    MergedLine* chosen, MergedLine* foot, double* turn_deg) {
+  const JunctionLine& line = side == 0 ? pair.left : pair.right;
+  // The junction in search pixels, from its near end toward the vanishing point.
+  const double s = 1.0 / in.search.scale;
+  *chosen = LineThrough(line.near_end * s, line.far_end * s);
+  return FindLowerEdge(in.search.bgr, 0, *chosen, pair.vanishing_point * s, side == 0,
+                       kBaseboardMaxTurnDeg, foot, turn_deg);
+}
+
+void TurnToColourFoot(const WallCheckInputs& in, MergedLine foot, double turn_deg, int side,
+                      JunctionPair* pair) {
+  // Turned in raw pixels by the same angle (a uniform scale keeps angles), over the foot's extent.
+  foot.start *= in.search.scale;
+  foot.end *= in.search.scale;
+  JunctionLine& line = side == 0 ? pair->left : pair->right;
+  TurnJunctionToFoot(foot, turn_deg, pair->vanishing_point, side == 0, &line);
+  line.edge_points.clear();  // The solvers sample the turned line: its edge may be faint.
+  line.edge_weights.clear();
+}
+
 Status SearchCeiling(const WallCheckInputs& in, CorridorGeometry* geometry,
                      CeilingEstimate* estimate) {
   const Status status = DetectCeiling(in.search.bgr, in.search.camera, *geometry,
@@ -59,16 +90,9 @@ bool CheckBaseboards(const WallCheckInputs& in, CorridorGeometry* geometry,
     if (!(side == 0 ? found.has_left_lower : found.has_right_lower)) continue;
     JunctionPair pair = result->junctions;
     (side == 0 ? pair.left : pair.right) = side == 0 ? pair.left_lower : pair.right_lower;
-    const CorridorObservation observation =
-        ObservationFromJunctions(pair, in.camera, options);
     SolverSummary summary;
-    if (!in.solver.Solve(observation, nullptr, &summary).ok()) continue;
-    CorridorGeometry g = summary.estimate;
-    g.camera_height = in.camera.mount_height;
-    if (!CheckPlausibleShape(g, options).ok() ||
-        !CheckLineFit(g, observation, in.camera, options).ok()) {
-      continue;
-    }
+    CorridorGeometry g;
+    if (!SolveWallCheck(in, pair, &g, &summary)) continue;
     CeilingEstimate ceiling;
     if (!DetectCeiling(in.search.bgr, in.search.camera, g, options.ceiling, &ceiling, in.edges)
              .ok()) {
@@ -116,31 +140,13 @@ bool TakeFootOfSplitWall(const WallCheckInputs& in, CorridorGeometry* geometry,
   const int side = ceiling.side_height[0] - h > ceiling.side_height[1] - h ? 0 : 1;
   const bool left = side == 0;
   JunctionPair pair = result->junctions;
-  JunctionLine& line = left ? pair.left : pair.right;
-  // The junction in search pixels, from its near end toward the vanishing point.
-  const double s = 1.0 / in.search.scale;
-  MergedLine chosen = LineThrough(line.near_end * s, line.far_end * s);
-  MergedLine foot;
+  MergedLine chosen, foot;
   double turn_deg = 0;
-  if (!FindLowerEdge(in.search.bgr, 0, chosen, pair.vanishing_point * s, left, kBaseboardMaxTurnDeg,
-                     &foot, &turn_deg)) {
-    return false;
-  }
-  // Turned in raw pixels by the same angle (a uniform scale keeps angles), over the foot's extent.
-  foot.start *= in.search.scale;
-  foot.end *= in.search.scale;
-  TurnJunctionToFoot(foot, turn_deg, pair.vanishing_point, left, &line);
-  line.edge_points.clear();  // The solvers sample the turned line: its edge is faint.
-  line.edge_weights.clear();
-  const CorridorObservation observation = ObservationFromJunctions(pair, in.camera, options);
+  if (!FindColourFoot(in, pair, side, &chosen, &foot, &turn_deg)) return false;
+  TurnToColourFoot(in, foot, turn_deg, side, &pair);
   SolverSummary summary;
-  if (!in.solver.Solve(observation, nullptr, &summary).ok()) return false;
-  CorridorGeometry g = summary.estimate;
-  g.camera_height = in.camera.mount_height;
-  if (!CheckPlausibleShape(g, options).ok() ||
-      !CheckLineFit(g, observation, in.camera, options).ok()) {
-    return false;
-  }
+  CorridorGeometry g;
+  if (!SolveWallCheck(in, pair, &g, &summary)) return false;
   CeilingEstimate moved;
   if (!DetectCeiling(in.search.bgr, in.search.camera, g, options.ceiling, &moved, in.edges).ok()) {
     return false;

@@ -5,6 +5,7 @@
 #include "corridor_depth/status.h"
 #include "corridor_depth/solver.h"
 #include "perception/ceiling_detector.h"
+#include "perception/line_segments.h"
 #include "perception/oriented_edges.h"
 #include "perception/working_image.h"
 #include "corridor_depth/recover_depth.h"
@@ -21,6 +22,23 @@ struct WallCheckInputs {
   const WorkingImage& search;          // The search image and its camera.
   ImageEdges* edges;                   // The search image's edges, computed on demand and shared.
 };
+
+// The layout's solve of `pair` into *summary and *g (the camera's mount height set): false when
+// the solve fails or its estimate is implausible (CheckPlausibleShape, CheckLineFit).
+bool SolveWallCheck(const WallCheckInputs& in, const JunctionPair& pair, CorridorGeometry* g,
+                    SolverSummary* summary);
+
+// The lower edge of the band below the junction of `side` (0 left, 1 right) of `pair`, found by
+// its colours (FindLowerEdge, within kBaseboardMaxTurnDeg) in the search image: the junction
+// there into *chosen, the edge into *foot, its turn into *turn_deg. False when there is none.
+bool FindColourFoot(const WallCheckInputs& in, const JunctionPair& pair, int side,
+                    MergedLine* chosen, MergedLine* foot, double* turn_deg);
+
+// The junction of `side` of *pair turned to `foot` (search pixels, as FindColourFoot gives it) by
+// `turn_deg` in raw pixels, over the foot's extent; the solvers then sample the turned line (its
+// edge points cleared).
+void TurnToColourFoot(const WallCheckInputs& in, MergedLine foot, double turn_deg, int side,
+                      JunctionPair* pair);
 
 // The ceiling search for the walls of *geometry into *estimate; the geometry's ceiling height
 // becomes the one found (options.ceiling_height when none is).
