@@ -27,6 +27,10 @@ bool BaseboardFeetOptions::Check(std::string* why) const {
     reason = "max_band_fade must be > 0";
   } else if (!(max_mirror_support > 0 && max_mirror_support <= 1)) {
     reason = "max_mirror_support must be in (0, 1]";
+  } else if (!(min_across_support >= 0 && min_across_support <= 1)) {
+    reason = "min_across_support must be in [0, 1] (0 = off)";
+  } else if (!(max_above_support >= 0 && max_above_support < 1)) {
+    reason = "max_above_support must be in [0, 1)";
   }
   if (reason.empty()) return true;
   if (why != nullptr) *why = reason;
@@ -86,6 +90,19 @@ bool ReflectionAbove(const WallCheckInputs& in, const BaseboardFeetOptions& opti
   const double x = (side == 0 ? -1 : 1) * d / (2 - r);
   return BestFloorLineSupportNear(in.search.bgr, in.search.camera, geometry, x, 1.02,
                                   in.options.ceiling, in.edges) > options.max_mirror_support;
+}
+
+// The best CorridorLineSupport of the top of a band b high on wall `side` of g, over heights
+// b (1 -+ 0.1): b is measured through the foot's ratio.
+double BandTopSupport(const WallCheckInputs& in, const CorridorGeometry& g, int side, double b) {
+  const double x = side == 0 ? -g.LeftDistance() : g.RightDistance();
+  double best = 0;
+  for (int k = -4; k <= 4; ++k) {
+    best = std::max(best, CorridorLineSupport(in.search.bgr, in.search.camera, g, x,
+                                              g.camera_height - b * (1 + 0.025 * k),
+                                              in.options.ceiling, in.edges));
+  }
+  return best;
 }
 
 // Takes the feet's pair and geometry into *result and *geometry, with `note`.
@@ -171,6 +188,61 @@ BaseboardFeet TakeOneBaseboardFoot(const WallCheckInputs& in, const BaseboardFee
                 "other's (%.3f): a baseboard %.2f m high",
                 far == 0 ? "left" : "right", r, factor, h * (1 - 1 / r));
   TakeFeet(pair, summary, g, note, geometry, result);
+  feet.taken = true;
+  return feet;
+}
+
+BaseboardFeet TakeFootShownAcross(const WallCheckInputs& in, const BaseboardFeetOptions& options,
+                                  CorridorGeometry* geometry, RecoverDepthResult* result) {
+  BaseboardFeet feet;
+  if (!(options.min_across_support > 0) || !result->junctions.status.ok()) return feet;
+  const double h = geometry->camera_height;
+  // Both ceiling sides found: their ratio is the measure (TakeOneBaseboardFoot).
+  if (CeilingDisagreement(result->ceiling, h, in.options.ceiling.min_support) >= 0) return feet;
+  int taken = -1;
+  JunctionPair taken_pair;
+  CorridorGeometry taken_g;
+  SolverSummary taken_summary;
+  double taken_r = 0, taken_across = 0;
+  for (int far = 0; far < 2; ++far) {
+    JunctionPair pair = result->junctions;
+    const bool sides[2] = {far == 0, far == 1};
+    CorridorGeometry g;
+    SolverSummary summary;
+    double ratio[2];
+    if (!TurnToFeet(in, options, sides, &pair) ||
+        !SolveFeet(in, pair, *geometry, &g, &summary, ratio)) {
+      continue;
+    }
+    const double r = ratio[far];
+    const double b = h * (1 - 1 / r);
+    // The wall moved had no band above its line first taken (a line at its foot would), and the
+    // other wall shows the band's top at the foot's height.
+    if (!(r < 2) || b < options.min_height || b > options.max_height ||
+        std::abs(std::log(ratio[1 - far])) > std::log1p(options.same_ratio) ||
+        ReflectionAbove(in, options, *geometry, far, r) ||
+        BandTopSupport(in, *geometry, far, b) > options.max_above_support) {
+      continue;
+    }
+    const double across = BandTopSupport(in, g, 1 - far, b);
+    if (across < options.min_across_support) continue;
+    if (taken >= 0) return feet;  // Either wall could be on its top: neither is told.
+    taken = far;
+    taken_pair = pair;
+    taken_g = g;
+    taken_summary = summary;
+    taken_r = r;
+    taken_across = across;
+  }
+  if (taken < 0) return feet;
+  feet.ratio[taken] = taken_r;
+  char note[240];
+  std::snprintf(note, sizeof(note),
+                "%s junction: the foot of the band below the line first taken (a baseboard's "
+                "top), whose top the other wall shows at the same height (%.2f m, on edges over "
+                "%.2f of its view)",
+                taken == 0 ? "left" : "right", h * (1 - 1 / taken_r), taken_across);
+  TakeFeet(taken_pair, taken_summary, taken_g, note, geometry, result);
   feet.taken = true;
   return feet;
 }

@@ -12,6 +12,7 @@ void VisitRecoverDepthOptions(RecoverDepthOptions* o, OptionVisitor* v) {
   v->Bool("inner_line_check", &o->ceiling_checks_inner_lines);
   v->Double("baseboard_feet_same_ratio", &o->baseboard_feet.same_ratio);
   v->Double("baseboard_feet_ceiling_ratio", &o->baseboard_feet.ceiling_ratio);
+  v->Double("baseboard_feet_across_support", &o->baseboard_feet.min_across_support);
   v->Bool("track_junctions", &o->track_junctions);
   v->Int("redetect_interval", &o->tracker.redetect_interval);
   v->Double("width_prior", &o->width_prior);

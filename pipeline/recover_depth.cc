@@ -370,6 +370,9 @@ Status DepthRecoverer::ReconstructAsSeen(const Camera& camera, RecoverDepthResul
         if (!feet.taken) {
           feet = TakeOneBaseboardFoot(checks, options_.baseboard_feet, &geometry, result);
         }
+        if (!feet.taken) {
+          feet = TakeFootShownAcross(checks, options_.baseboard_feet, &geometry, result);
+        }
         if (feet.taken) {
           lower_taken = true;
           status = SearchCeiling(checks, &geometry, &result->ceiling);

@@ -52,6 +52,10 @@ DEFINE_double(baseboard_feet_ceiling_ratio, 0.03,
               "One junction on a baseboard's top: when the foot of the band below it moves its wall "
               "in by its ceiling side's height over the other's, within this (relative), the foot "
               "is the junction (beyond the paper; 0 = off)");
+DEFINE_double(baseboard_feet_across_support, 0.5,
+              "One junction on a baseboard's top, the ceiling too weak to say: when the other wall "
+              "shows the band's top at the height its foot gives, on edges over this fraction of "
+              "its view, the foot is the junction (beyond the paper; 0 = off)");
 DEFINE_int32(search_max_width, 640,
              "Wider images are halved before the ceiling and end-wall searches until they fit, px "
              "(0 = full resolution)");
@@ -138,6 +142,7 @@ Status RecoverDepthOptionsFromFlags(RecoverDepthOptions* options) {
   options->ceiling_checks_inner_lines = FLAGS_inner_line_check;
   options->baseboard_feet.same_ratio = FLAGS_baseboard_feet_same_ratio;
   options->baseboard_feet.ceiling_ratio = FLAGS_baseboard_feet_ceiling_ratio;
+  options->baseboard_feet.min_across_support = FLAGS_baseboard_feet_across_support;
   options->track_junctions = FLAGS_track_junctions;
   options->tracker.redetect_interval = FLAGS_redetect_interval;
   options->width_prior = FLAGS_width_prior;

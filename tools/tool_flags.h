@@ -25,6 +25,7 @@ DECLARE_bool(end_wall);
 DECLARE_bool(inner_line_check);
 DECLARE_double(baseboard_feet_same_ratio);
 DECLARE_double(baseboard_feet_ceiling_ratio);
+DECLARE_double(baseboard_feet_across_support);
 DECLARE_double(width_prior);
 DECLARE_double(max_width_change);
 DECLARE_double(max_ceiling_disagreement);
