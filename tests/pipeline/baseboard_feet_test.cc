@@ -111,32 +111,45 @@ TEST(BaseboardFeetTest, BothWallsOnTheTopsMoveToTheFeet) {
   }
 }
 
+// Both the two-wall and the one-wall (other wall's band) checks.
 TEST(BaseboardFeetTest, JunctionsOnTheFloorsEdgeStay) {
   for (const double gloss : {0.0, 0.5}) {
     const FeetCase c = Render(0.1, gloss);
     ASSERT_FALSE(c.frame.bgr.empty());
-    CorridorGeometry g = c.frame.truth;
-    RecoverDepthResult result;
-    EXPECT_FALSE(Check(c, BaseboardFeetOptions(), &g, &result).taken) << "gloss " << gloss;
-    EXPECT_EQ(g.width, c.frame.truth.width);
-    EXPECT_EQ(g.offset, c.frame.truth.offset);
+    for (const FeetCheck check : {TakeBothBaseboardFeet, TakeFootShownAcross}) {
+      CorridorGeometry g = c.frame.truth;
+      RecoverDepthResult result;
+      EXPECT_FALSE(Check(c, BaseboardFeetOptions(), &g, &result, check).taken)
+          << "gloss " << gloss;
+      EXPECT_EQ(g.width, c.frame.truth.width);
+      EXPECT_EQ(g.offset, c.frame.truth.offset);
+    }
   }
 }
 
 // On the polished floor it is the baseboard's top above the junctions that tells: without that
-// test the reflection's foot would be taken, both walls in by (h + b) / h.
+// test the reflection's foot would be taken, both walls in by (h + b) / h. The one-wall check,
+// whose other wall shows a baseboard's top at the band's height, is told by the same top above the
+// wall that would move (max_above_support): blind to it, that wall goes (h + b) / h in.
 TEST(BaseboardFeetTest, AReflectionIsToldByTheBaseboardsTopAbove) {
   const FeetCase c = Render(0.1, 0.5);
   ASSERT_FALSE(c.frame.bgr.empty());
-  CorridorGeometry g = c.frame.truth;
+  const double reflected = (0.66 + 0.1) / 0.66;
   BaseboardFeetOptions no_mirror_test;
   no_mirror_test.max_mirror_support = 1;
+  CorridorGeometry g = c.frame.truth;
   RecoverDepthResult result;
-  const BaseboardFeet feet = Check(c, no_mirror_test, &g, &result);
+  BaseboardFeet feet = Check(c, no_mirror_test, &g, &result);
   ASSERT_TRUE(feet.taken);
-  const double reflected = (0.66 + 0.1) / 0.66;
   EXPECT_NEAR(feet.ratio[0], reflected, 0.03 * reflected);
   EXPECT_NEAR(feet.ratio[1], reflected, 0.03 * reflected);
+  g = c.frame.truth;
+  EXPECT_FALSE(Check(c, no_mirror_test, &g, &result, TakeFootShownAcross).taken);
+  BaseboardFeetOptions blind = no_mirror_test;
+  blind.max_above_support = 0.999;
+  feet = Check(c, blind, &g, &result, TakeFootShownAcross);
+  ASSERT_TRUE(feet.taken);
+  EXPECT_NEAR(std::max(feet.ratio[0], feet.ratio[1]), reflected, 0.03 * reflected);
 }
 
 // A satin floor below a baseboard of nearly the wall's colour (the satin class's scene 0, frame
@@ -184,31 +197,6 @@ TEST(BaseboardFeetTest, OneWallOnItsTopMovesToItsFootWhenTheOtherShowsTheBand) {
     const double before = g.width;
     EXPECT_FALSE(Check(c, off, &g, &result, TakeFootShownAcross).taken);
     EXPECT_EQ(g.width, before);
-  }
-}
-
-// Junctions at the feet stay: on the polished floor the reflection makes a band below each, and
-// the other wall shows a baseboard's top; but so does the wall that would move, above its line.
-TEST(BaseboardFeetTest, FeetWithABandAboveStayWhateverTheOtherWallShows) {
-  for (const double gloss : {0.0, 0.5}) {
-    const FeetCase c = Render(0.1, gloss);
-    ASSERT_FALSE(c.frame.bgr.empty());
-    CorridorGeometry g = c.frame.truth;
-    RecoverDepthResult result;
-    EXPECT_FALSE(Check(c, BaseboardFeetOptions(), &g, &result, TakeFootShownAcross).taken)
-        << "gloss " << gloss;
-    EXPECT_EQ(g.width, c.frame.truth.width);
-    BaseboardFeetOptions no_mirror_test;
-    no_mirror_test.max_mirror_support = 1;
-    EXPECT_FALSE(Check(c, no_mirror_test, &g, &result, TakeFootShownAcross).taken);
-    if (gloss == 0) continue;
-    // Blind to the band above, the reflection's foot is taken: a wall in by (h + b) / h.
-    BaseboardFeetOptions blind = no_mirror_test;
-    blind.max_above_support = 0.999;
-    const BaseboardFeet feet = Check(c, blind, &g, &result, TakeFootShownAcross);
-    EXPECT_TRUE(feet.taken);
-    const double reflected = (0.66 + 0.1) / 0.66;
-    EXPECT_NEAR(std::max(feet.ratio[0], feet.ratio[1]), reflected, 0.03 * reflected);
   }
 }
 
