@@ -197,8 +197,6 @@ BaseboardFeet TakeFootShownAcross(const WallCheckInputs& in, const BaseboardFeet
   BaseboardFeet feet;
   if (!(options.min_across_support > 0) || !result->junctions.status.ok()) return feet;
   const double h = geometry->camera_height;
-  // Both ceiling sides found: their ratio is the measure (TakeOneBaseboardFoot).
-  if (CeilingDisagreement(result->ceiling, h, in.options.ceiling.min_support) >= 0) return feet;
   int taken = -1;
   JunctionPair taken_pair;
   CorridorGeometry taken_g;

@@ -26,11 +26,12 @@ BaseboardFeet TakeBothBaseboardFeet(const WallCheckInputs& in, const BaseboardFe
 BaseboardFeet TakeOneBaseboardFoot(const WallCheckInputs& in, const BaseboardFeetOptions& options,
                                    CorridorGeometry* geometry, RecoverDepthResult* result);
 
-// One wall on its baseboard's top, the ceiling too weak to say (its sides not both found with the
-// ceiling search's minimum support): the foot of the band below its junction is taken when the
-// other wall shows the band's top at the height b the foot gives (CorridorLineSupport over
-// min_across_support), the band passes the band and reflection tests and the other wall stays.
-// Exactly one wall may pass. Taken, as TakeBothBaseboardFeet.
+// One wall on its baseboard's top, whatever the ceiling says (its sides too weak to find, or read
+// off other lines: a window band's top): the foot of the band below its junction is taken when
+// the other wall shows the band's top at the height b the foot gives (CorridorLineSupport over
+// min_across_support) and the wall moved shows none at b above its line first taken (over
+// max_above_support), the band passes the band and reflection tests and the other wall stays.
+// Exactly one wall may pass. Taken, as TakeBothBaseboardFeet. Run after TakeOneBaseboardFoot.
 BaseboardFeet TakeFootShownAcross(const WallCheckInputs& in, const BaseboardFeetOptions& options,
                                   CorridorGeometry* geometry, RecoverDepthResult* result);
 

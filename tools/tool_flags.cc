@@ -53,7 +53,7 @@ DEFINE_double(baseboard_feet_ceiling_ratio, 0.03,
               "in by its ceiling side's height over the other's, within this (relative), the foot "
               "is the junction (beyond the paper; 0 = off)");
 DEFINE_double(baseboard_feet_across_support, 0.5,
-              "One junction on a baseboard's top, the ceiling too weak to say: when the other wall "
+              "One junction on a baseboard's top, the ceiling not telling: when the other wall "
               "shows the band's top at the height its foot gives, on edges over this fraction of "
               "its view, the foot is the junction (beyond the paper; 0 = off)");
 DEFINE_int32(search_max_width, 640,

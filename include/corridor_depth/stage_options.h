@@ -164,10 +164,10 @@ struct InnerLineCheckOptions {
 // the wall distance d / (2 - r), on edges; above a baseboard's top there is only wall. A satin
 // floor's reflection fades from the junction into the floor; a painted baseboard is one colour.
 // One wall on its baseboard's top raises its ceiling side by the same h / (h - b): a foot that
-// moves that wall in by the ratio of the two ceiling sides is its junction. Where the ceiling is too
-// weak to say, the other wall tells: its baseboard's top stands at the height b the foot gives,
-// while the wall moved shows no band top at b above its line first taken (as it would, were that
-// line its foot).
+// moves that wall in by the ratio of the two ceiling sides is its junction. Otherwise (the ceiling
+// too weak to say, or read off other lines) the other wall tells: its baseboard's top stands at the
+// height b the foot gives, while the wall moved shows no band top at b above its line first taken
+// (as it would, were that line its foot).
 struct BaseboardFeetOptions {
   double same_ratio = 0.015;        // Both walls: their ratios agree within this (relative); 0 = off.
   double ceiling_ratio = 0.03;      // One wall: its foot's ratio and its ceiling side's over the other's agree within this (relative); 0 = off.
@@ -175,7 +175,7 @@ struct BaseboardFeetOptions {
   double max_height = 0.2;          // Greatest, m.
   double min_band_contrast = 1.0;   // Each band at least this unlike the floor beyond its foot (BandContrast, in floor spreads: more than the floor's own spread).
   double max_band_fade = 0.85;      // Each band's change from a quarter to three quarters of the way down at most this fraction of its middle's step to the floor beyond (BandFade: 0 for one colour, about 1 for a ramp into the floor).
-  double min_across_support = 0.5;  // One wall, the ceiling too weak to say: the other wall's band top at the foot's height b on edges over this fraction of its view (CorridorLineSupport); 0 = off.
+  double min_across_support = 0.5;  // One wall, the ceiling sides not agreeing on its ratio: the other wall's band top at the foot's height b on edges over this fraction of its view (CorridorLineSupport); 0 = off.
   double max_above_support = 0.25;  // ... and the wall moved shows no band top at b above its line first taken: on edges over at most this fraction of its view.
   double max_mirror_support = 0.5;  // A line above either junction where a reflected baseboard's top would be, on edges over this fraction of its view (CorridorLineSupport): the bands are reflections.
 

@@ -265,7 +265,8 @@ TEST(BaseboardFeetTest, EndToEndBothWallsComeBackToTheirFeet) {
 // One wall on its baseboard's top, end to end: its ceiling side is the higher by the ratio its
 // band's foot moves it in by. The baseboard class's scene 7 frame 11 (the right wall on a line
 // above its foot, 6.5% wide), the rail class's scene 6 frame 13 (the left, 8.3% wide) and the
-// glossy class's scene 1 frame 14 (the left, 5.8% wide). Off, they stay more than 5% off.
+// glossy class's scene 1 frame 14 (the left, 5.8% wide). With both one-wall checks off (the rail
+// frame's other wall shows the band's top too), they stay more than 5% off.
 TEST(BaseboardFeetTest, EndToEndOneWallComesBackToItsFoot) {
   for (const auto& [name, scene, frame] :
        {std::tuple<const char*, int, int>{"baseboard", 7, 11}, {"rail", 6, 13}, {"glossy", 1, 14}}) {
@@ -274,15 +275,17 @@ TEST(BaseboardFeetTest, EndToEndOneWallComesBackToItsFoot) {
     RecoverDepthResult result;
     ASSERT_TRUE(RecoverDepth(f.frame.bgr, f.camera, options, &result).ok()) << name;
     EXPECT_LT(std::abs(result.geometry.width - f.true_width) / f.true_width, 0.03) << name;
-    EXPECT_NE(result.fallback.find("the foot of the band below"), std::string::npos)
+    EXPECT_NE(result.fallback.find("as its ceiling side's height over the other's"),
+              std::string::npos)
         << name << ": " << result.fallback;
     options.baseboard_feet.ceiling_ratio = 0;
+    options.baseboard_feet.min_across_support = 0;
     ASSERT_TRUE(RecoverDepth(f.frame.bgr, f.camera, options, &result).ok()) << name;
     EXPECT_GT(std::abs(result.geometry.width - f.true_width) / f.true_width, 0.05) << name;
   }
 }
 
-// One wall on its baseboard's top where the ceiling is too weak to say, end to end: the pillars
+// One wall on its baseboard's top where the ceiling does not tell, end to end: the pillars
 // class's scene 3 frames 4 and 13 (a grey baseboard on a dark tiled floor, the right wall 9-11%
 // too far) and scene 5 frame 13, and the carpet class's scene 4 frame 17 (the right wall, 11%).
 // Off, they stay more than 5% off.
@@ -304,6 +307,23 @@ TEST(BaseboardFeetTest, EndToEndTheOtherWallsBandBringsOneWallToItsFoot) {
     EXPECT_GT(std::abs(result.geometry.width - f.true_width) / f.true_width, 0.05)
         << name << " " << scene << " " << frame;
   }
+}
+
+// Where the ceiling sides are found but read off other lines (the mix class's scene 8 frame 15:
+// they disagree by 37%, far from the band's ratio, so TakeOneBaseboardFoot takes nothing), the
+// other wall's band still brings the left wall to its foot; off, the frame is refused.
+TEST(BaseboardFeetTest, EndToEndTheOtherWallsBandWhereTheCeilingSidesDisagree) {
+  const testing_util::PresetFrame f = testing_util::RenderPreset("mix", 8, 15);
+  RecoverDepthOptions options;
+  RecoverDepthResult result;
+  ASSERT_TRUE(RecoverDepth(f.frame.bgr, f.camera, options, &result).ok()) << result.fallback;
+  EXPECT_LT(std::abs(result.geometry.width - f.true_width) / f.true_width, 0.03);
+  EXPECT_NE(result.fallback.find("the other wall shows"), std::string::npos) << result.fallback;
+  options.baseboard_feet.min_across_support = 0;
+  EXPECT_EQ(RecoverDepth(f.frame.bgr, f.camera, options, &result).code(),
+            StatusCode::kLowConfidence);
+  EXPECT_NE(result.status.message().find("ceiling sides disagree"), std::string::npos)
+      << result.status.message();
 }
 
 }  // namespace
