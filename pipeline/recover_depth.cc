@@ -356,7 +356,9 @@ Status DepthRecoverer::ReconstructAsSeen(const Camera& camera, RecoverDepthResul
   if (search_end_wall && WorkingScale(search.bgr.cols, options_.end_wall.max_work_width) == 1) {
     ComputeImageEdges(search.bgr, &edges);
   }
-  const WallCheckInputs checks{layout_options_, *layout_solver_, camera, search, &edges};
+  ColourFootMemo colour_feet;
+  const WallCheckInputs checks{layout_options_, *layout_solver_, camera, search, &edges,
+                               &colour_feet};
   if (search_ceiling) {
     status = SearchCeiling(checks, &geometry, &result->ceiling);
     if (!status.ok()) return finish(status);

@@ -36,11 +36,29 @@ bool SolveWallCheck(const WallCheckInputs& in, const JunctionPair& pair, Corrido
 bool FindColourFoot(const WallCheckInputs& in, const JunctionPair& pair, int side,
                     MergedLine* chosen, MergedLine* foot, double* turn_deg) {
   const JunctionLine& line = side == 0 ? pair.left : pair.right;
+  ColourFootMemo::Entry* kept =
+      in.colour_feet != nullptr && (side == 0 || side == 1) ? &in.colour_feet->side[side] : nullptr;
+  if (kept != nullptr && kept->valid && kept->line == line.line &&
+      kept->near_end == line.near_end && kept->far_end == line.far_end &&
+      kept->vanishing_point == pair.vanishing_point) {
+    *chosen = kept->chosen;
+    if (kept->found) *foot = kept->foot, *turn_deg = kept->turn_deg;
+    return kept->found;
+  }
   // The junction in search pixels, from its near end toward the vanishing point.
   const double s = 1.0 / in.search.scale;
   *chosen = LineThrough(line.near_end * s, line.far_end * s);
-  return FindLowerEdge(in.search.bgr, 0, *chosen, pair.vanishing_point * s, side == 0,
-                       kBaseboardMaxTurnDeg, foot, turn_deg);
+  const bool found = FindLowerEdge(in.search.bgr, 0, *chosen, pair.vanishing_point * s,
+                                   side == 0, kBaseboardMaxTurnDeg, foot, turn_deg);
+  if (kept != nullptr) {
+    kept->valid = true;
+    kept->line = line.line, kept->near_end = line.near_end, kept->far_end = line.far_end;
+    kept->vanishing_point = pair.vanishing_point;
+    kept->found = found;
+    kept->chosen = *chosen;
+    if (found) kept->foot = *foot, kept->turn_deg = *turn_deg;
+  }
+  return found;
 }
 
 void TurnToColourFoot(const WallCheckInputs& in, MergedLine foot, double turn_deg, int side,

@@ -12,15 +12,31 @@
 
 namespace corridor {
 
+// The colour feet (FindColourFoot) found below the frame's junctions, per side, kept for the
+// checks that look below the same line again.
+struct ColourFootMemo {
+  struct Entry {
+    bool valid = false;
+    Eigen::Vector3d line = Eigen::Vector3d::Zero();  // The junction and vanishing point looked from.
+    Eigen::Vector2d near_end = Eigen::Vector2d::Zero(), far_end = Eigen::Vector2d::Zero();
+    Eigen::Vector2d vanishing_point = Eigen::Vector2d::Zero();
+    bool found = false;  // What FindColourFoot gave.
+    MergedLine chosen, foot;
+    double turn_deg = 0;
+  };
+  Entry side[2];
+};
+
 // The wall corrections that the ceiling's evidence allows (beyond the paper), run by
 // DepthRecoverer::Reconstruct after the solver. They work on the frame's search image (the frame
-// halved to search_max_width) and share its edges.
+// halved to search_max_width) and share its edges and colour feet.
 struct WallCheckInputs {
-  const RecoverDepthOptions& options;  // The layout's options (chosen_solve.h: evidence "lines").
-  const CorridorSolver& solver;        // The layout's solver (the baseboard check solves again).
-  const Camera& camera;                // The frame's camera at full resolution.
-  const WorkingImage& search;          // The search image and its camera.
-  ImageEdges* edges;                   // The search image's edges, computed on demand and shared.
+  const RecoverDepthOptions& options;     // The layout's options (chosen_solve.h: evidence "lines").
+  const CorridorSolver& solver;           // The layout's solver (the baseboard check solves again).
+  const Camera& camera;                   // The frame's camera at full resolution.
+  const WorkingImage& search;             // The search image and its camera.
+  ImageEdges* edges;                      // The search image's edges, computed on demand and shared.
+  ColourFootMemo* colour_feet = nullptr;  // The frame's colour feet, when shared (else none kept).
 };
 
 // The layout's solve of `pair` into *summary and *g (the camera's mount height set): false when
