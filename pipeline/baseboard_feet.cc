@@ -81,6 +81,18 @@ bool SolveFeet(const WallCheckInputs& in, const JunctionPair& pair,
   return true;
 }
 
+// The foot of wall `far`'s band alone (TurnToFeet, *pair turned to it), solved into *g and
+// *summary with each wall's ratio (SolveFeet): false unless found, the other wall stays (within
+// same_ratio) and the wall moves in by less than 2.
+bool OneWallFoot(const WallCheckInputs& in, const BaseboardFeetOptions& options,
+                 const CorridorGeometry& geometry, int far, JunctionPair* pair, CorridorGeometry* g,
+                 SolverSummary* summary, double ratio[2]) {
+  const bool sides[2] = {far == 0, far == 1};
+  return TurnToFeet(in, options, sides, pair) &&
+         SolveFeet(in, *pair, geometry, g, summary, ratio) &&
+         std::abs(std::log(ratio[1 - far])) <= std::log1p(options.same_ratio) && ratio[far] < 2;
+}
+
 // Whether a line stands above the junction of `side` where the top of a baseboard mirrored into
 // a band of ratio r would (a reflected foot at d h / (h + b), its top at d h / (h - b) =
 // d / (2 - r)), on edges over max_mirror_support of its view.
@@ -167,17 +179,12 @@ BaseboardFeet TakeOneBaseboardFoot(const WallCheckInputs& in, const BaseboardFee
   const double b_ceiling = h * (1 - 1 / factor);
   if (b_ceiling < options.min_height || b_ceiling > options.max_height) return feet;
   JunctionPair pair = result->junctions;
-  const bool sides[2] = {far == 0, far == 1};
   CorridorGeometry g;
   SolverSummary summary;
-  if (!TurnToFeet(in, options, sides, &pair) ||
-      !SolveFeet(in, pair, *geometry, &g, &summary, feet.ratio)) {
-    return feet;
-  }
-  // Two measures of one ratio: the foot's and the ceiling sides'; the other wall stays.
+  if (!OneWallFoot(in, options, *geometry, far, &pair, &g, &summary, feet.ratio)) return feet;
+  // Two measures of one ratio: the foot's and the ceiling sides'.
   const double r = feet.ratio[far];
   if (std::abs(std::log(r / factor)) > std::log1p(options.ceiling_ratio) ||
-      std::abs(std::log(feet.ratio[1 - far])) > std::log1p(options.same_ratio) || !(r < 2) ||
       ReflectionAbove(in, options, *geometry, far, r)) {
     return feet;
   }
@@ -204,20 +211,15 @@ BaseboardFeet TakeFootShownAcross(const WallCheckInputs& in, const BaseboardFeet
   double taken_r = 0, taken_across = 0;
   for (int far = 0; far < 2; ++far) {
     JunctionPair pair = result->junctions;
-    const bool sides[2] = {far == 0, far == 1};
     CorridorGeometry g;
     SolverSummary summary;
     double ratio[2];
-    if (!TurnToFeet(in, options, sides, &pair) ||
-        !SolveFeet(in, pair, *geometry, &g, &summary, ratio)) {
-      continue;
-    }
+    if (!OneWallFoot(in, options, *geometry, far, &pair, &g, &summary, ratio)) continue;
     const double r = ratio[far];
     const double b = h * (1 - 1 / r);
     // The wall moved had no band above its line first taken (a line at its foot would), and the
     // other wall shows the band's top at the foot's height.
-    if (!(r < 2) || b < options.min_height || b > options.max_height ||
-        std::abs(std::log(ratio[1 - far])) > std::log1p(options.same_ratio) ||
+    if (b < options.min_height || b > options.max_height ||
         ReflectionAbove(in, options, *geometry, far, r) ||
         BandTopSupport(in, *geometry, far, b) > options.max_above_support) {
       continue;
